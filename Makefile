@@ -1,0 +1,63 @@
+# flotsam: every target installs what it needs first (Debian 12, root or sudo).
+#   make demo   build and run the paper's bridge case into out/
+#   make test   build and run the whole test suite (CTest)
+#   make bench  build and run the benchmarks (figures go to docs/performance.md)
+
+BUILD     ?= build
+SAN_BUILD ?= build-sanitize
+JOBS      ?= $(shell nproc)
+CI        ?=
+SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-format \
+            libeigen3-dev libsuitesparse-dev libgmsh-dev libyaml-cpp-dev libcli11-dev \
+            libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev
+
+CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+               $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
+
+.PHONY: all deps build test test-sanitize test-slow demo bench format format-check clean
+
+all: build
+
+deps:
+	@missing=$$(for p in $(PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	    echo "installing:" $$missing; \
+	    $(SUDO) apt-get update -qq && \
+	    DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
+	fi
+
+$(BUILD)/build.ninja: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/build.ninja
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD) -LE slow --output-on-failure -j $(JOBS)
+
+test-slow: build
+	ctest --test-dir $(BUILD) -L slow --output-on-failure
+
+test-sanitize: deps
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFLOTSAM_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+	ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
+
+demo: build
+	$(BUILD)/flotsam demo examples/bridge_piers.yaml --output out --overwrite
+
+bench: build
+	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
+	@for b in $(BUILD)/bench/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.5; done
+
+format:
+	find src tests bench -name '*.[ch]pp' | xargs clang-format -i
+
+format-check:
+	find src tests bench -name '*.[ch]pp' | xargs clang-format --dry-run -Werror
+
+clean:
+	rm -rf $(BUILD) $(SAN_BUILD)

@@ -1,0 +1,71 @@
+#pragma once
+// The bodies: rigid rectangles in plan view (spec 2), stored as a structure of arrays so that a
+// loop over 100,000 bodies touches only the arrays it needs. Bodies are reached by index; `id`
+// is the user's name for a body and survives removal of others.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace flotsam {
+
+enum class Shape : std::uint8_t { log, box };
+enum class BodyState : std::uint8_t { floating, grounded, gone };
+
+/// What the user gives for one body (spec 2); everything else is derived.
+struct BodySpec {
+  Shape shape = Shape::log;
+  double length = 20.0;    // L [m], long side
+  double width = 1.0;      // l [m], short side (a log's diameter)
+  double height = 1.0;     // b [m], vertical size (= l for a log)
+  double density = 600.0;  // rho_p [kg m^-3]
+  Vec2 position = Vec2::Zero();  // x_G [m]
+  double angle = 0.0;            // theta [rad], long axis from the x axis
+  Vec2 velocity = Vec2::Zero();  // u_p [m/s]
+  double angular_velocity = 0.0; // omega [rad/s]
+  long id = -1;                  // user's id; -1: the next free one
+};
+
+struct BodySet {
+  double water_density = 1000.0;  // rho [kg m^-3], for the draft
+
+  // Geometry and mass (cold: set once).
+  std::vector<Shape> shape;
+  std::vector<double> length;   // L [m]
+  std::vector<double> width;    // l [m]
+  std::vector<double> height;   // b [m]
+  std::vector<double> density;  // rho_p [kg m^-3]
+  std::vector<double> mass;     // m_p [kg]
+  std::vector<double> inertia;  // I_p [kg m^2], yaw, about G
+  std::vector<double> draft;    // d [m], floating draft (the full height if it cannot float)
+  std::vector<long> id;
+  long next_id = 0;  // the id the next body without one gets
+
+  // State (hot).
+  std::vector<Vec2> position;            // x_G [m]
+  std::vector<double> angle;             // theta [rad]
+  std::vector<Vec2> velocity;            // u_p [m/s]
+  std::vector<double> angular_velocity;  // omega [rad/s]
+  std::vector<BodyState> state;
+  std::vector<int> element_hint;  // last element found for G (point location), -1 unknown
+
+  int size() const { return static_cast<int>(position.size()); }
+
+  /// Appends a body with its mass, inertia and draft (spec 2); returns its index.
+  int add(const BodySpec& spec);
+
+  /// Unit vector along the long axis, and the body's half extents (L/2, l/2) [m].
+  Vec2 axis(int i) const { return {std::cos(angle[i]), std::sin(angle[i])}; }
+  Vec2 half_extents(int i) const { return {0.5 * length[i], 0.5 * width[i]}; }
+};
+
+/// Submerged cross-section of a log of diameter l at immersion depth d (circle segment) [m^2].
+double log_segment_area(double diameter, double depth);
+
+/// Floating draft from Archimedes, rho V_sub(d) = m_p (spec 2) [m]. A body denser than water
+/// gets its full height.
+double floating_draft(Shape shape, double width, double height, double density,
+                      double water_density);
+
+}  // namespace flotsam
