@@ -16,15 +16,15 @@ enum class BodyState : std::uint8_t { floating, grounded, gone };
 /// What the user gives for one body (spec 2); everything else is derived.
 struct BodySpec {
   Shape shape = Shape::log;
-  double length = 20.0;    // L [m], long side
-  double width = 1.0;      // l [m], short side (a log's diameter)
-  double height = 1.0;     // b [m], vertical size (= l for a log)
-  double density = 600.0;  // rho_p [kg m^-3]
-  Vec2 position = Vec2::Zero();  // x_G [m]
-  double angle = 0.0;            // theta [rad], long axis from the x axis
-  Vec2 velocity = Vec2::Zero();  // u_p [m/s]
-  double angular_velocity = 0.0; // omega [rad/s]
-  long id = -1;                  // user's id; -1: the next free one
+  double length = 20.0;           // L [m], long side
+  double width = 1.0;             // l [m], short side (a log's diameter)
+  double height = 1.0;            // b [m], vertical size (= l for a log)
+  double density = 600.0;         // rho_p [kg m^-3]
+  Vec2 position = Vec2::Zero();   // x_G [m]
+  double angle = 0.0;             // theta [rad], long axis from the x axis
+  Vec2 velocity = Vec2::Zero();   // u_p [m/s]
+  double angular_velocity = 0.0;  // omega [rad/s]
+  long id = -1;                   // user's id; -1: the next free one
 };
 
 struct BodySet {

@@ -1,6 +1,6 @@
 // flotsam: the command-line program. Subcommands are registered by cli/commands.hpp.
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 

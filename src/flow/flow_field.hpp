@@ -10,14 +10,14 @@ namespace flotsam {
 
 /// The flow at one point and time.
 struct FlowSample {
-  double eta = 0.0;        // free-surface elevation [m]
-  double H = 0.0;          // water depth eta - z_b [m]
-  Vec2 u = Vec2::Zero();   // depth-averaged velocity u_f [m/s]
-  Mat2 grad_u = Mat2::Zero();  // velocity gradient, grad_u(i, j) = d u_i / d x_j [1/s]
-  Vec2 du_dt = Vec2::Zero();   // local time derivative d u_f / d t [m/s^2]
-  Vec2 grad_zb = Vec2::Zero(); // bed slope [-]
-  bool inside = true;      // false: the point is outside the domain (the other fields are unset)
-  int boundary_group = -1; // when outside: the boundary group of the edge the walk left through
+  double eta = 0.0;             // free-surface elevation [m]
+  double H = 0.0;               // water depth eta - z_b [m]
+  Vec2 u = Vec2::Zero();        // depth-averaged velocity u_f [m/s]
+  Mat2 grad_u = Mat2::Zero();   // velocity gradient, grad_u(i, j) = d u_i / d x_j [1/s]
+  Vec2 du_dt = Vec2::Zero();    // local time derivative d u_f / d t [m/s^2]
+  Vec2 grad_zb = Vec2::Zero();  // bed slope [-]
+  bool inside = true;       // false: the point is outside the domain (the other fields are unset)
+  int boundary_group = -1;  // when outside: the boundary group of the edge the walk left through
 };
 
 /// A body's reaction on the flow (spec 5, two-way): a force F_x [N] applied on a footprint.

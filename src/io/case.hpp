@@ -9,61 +9,17 @@
 #include "bodies/body_set.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
+#include "mesh/geometry.hpp"
 
 namespace flotsam {
-
-// ---- geometry and mesh -------------------------------------------------------------------
-
-struct Pier {
-  Vec2 centre;    // [m]
-  double radius;  // [m]
-};
-
-/// Rectangular channel [0, length] x [0, width] with circular piers (spec 8.2). Boundary groups:
-/// "inflow" (x = 0), "outflow" (x = length), "bank_right" (y = 0), "bank_left" (y = width),
-/// "pier_1", "pier_2", ... in the order given.
-struct ChannelGeometry {
-  double length = 1500.0;  // [m]
-  double width = 170.0;    // [m]
-  std::vector<Pier> piers;
-  double mesh_size = 14.0;       // [m] element size far from the piers
-  double pier_mesh_size = 4.0;   // [m] element size on the piers' circles
-  double refine_distance = 60.0; // [m] distance from a pier over which the size grows back
-};
-
-/// 180-degree bend (spec 8.1): straight inlet reach along -x ending at the bend, a half annulus
-/// centred at `centre`, and a straight outlet reach back along +x. Groups: "inflow", "outflow",
-/// "bank_inner", "bank_outer".
-struct BendGeometry {
-  double width = 0.8;          // B [m]
-  double inner_radius = 0.4;   // [m]
-  double inlet_length = 3.0;   // [m]
-  double outlet_length = 3.0;  // [m]
-  double mesh_size = 0.04;     // [m]
-};
-
-/// A closed polygon; side i joins point i and point i+1 and belongs to group names[i].
-struct PolygonGeometry {
-  std::vector<Vec2> points;          // [m], counter-clockwise or clockwise
-  std::vector<std::string> groups;   // one per side
-  double mesh_size = 1.0;            // [m]
-};
-
-struct MeshSource {
-  enum class Kind { file, channel, bend, polygon } kind = Kind::channel;
-  std::string file;  // Gmsh .msh (2.2 or 4.1, ASCII or binary) when kind == file
-  ChannelGeometry channel;
-  BendGeometry bend;
-  PolygonGeometry polygon;
-};
 
 // ---- bed ----------------------------------------------------------------------------------
 
 struct BedConfig {
   enum class Kind { flat, slope, table } kind = Kind::flat;
-  double level = 0.0;            // z_b at the origin [m]
-  Vec2 slope = Vec2::Zero();     // (-dz_b/dx, -dz_b/dy) [-]: positive = bed falls along +x / +y
-  TimeSeries profile_x;          // kind == table: z_b as a function of x [m] (piecewise linear)
+  double level = 0.0;         // z_b at the origin [m]
+  Vec2 slope = Vec2::Zero();  // (-dz_b/dx, -dz_b/dy) [-]: positive = bed falls along +x / +y
+  TimeSeries profile_x;       // kind == table: z_b as a function of x [m] (piecewise linear)
 };
 
 // ---- flow ---------------------------------------------------------------------------------
@@ -73,24 +29,24 @@ enum class TurbulenceModel { none, smagorinsky, mixing_length };
 
 struct BoundaryCondition {
   enum class Kind { elevation, discharge, velocity, wall, noslip } kind = Kind::wall;
-  std::string group;      // mesh physical group
-  TimeSeries value;       // eta_b [m] or Q [m^3/s]
-  TimeSeries value_y;     // velocity: u_b = (value, value_y) [m/s]
+  std::string group;   // mesh physical group
+  TimeSeries value;    // eta_b [m] or Q [m^3/s]
+  TimeSeries value_y;  // velocity: u_b = (value, value_y) [m/s]
 };
 
 struct FlowConfig {
-  double gravity = 9.81;            // g [m s^-2]
-  double water_density = 1000.0;    // rho [kg m^-3]
-  double viscosity = 1e-6;          // nu [m^2/s] (M-3)
+  double gravity = 9.81;          // g [m s^-2]
+  double water_density = 1000.0;  // rho [kg m^-3]
+  double viscosity = 1e-6;        // nu [m^2/s] (M-3)
   FrictionLaw friction = FrictionLaw::none;
   double friction_coefficient = 0.0;  // n [s m^-1/3] (manning), C [m^1/2/s] (chezy), K (strickler)
   TurbulenceModel turbulence = TurbulenceModel::none;
   double smagorinsky_constant = 0.2;  // C_s [-]
   double latitude_deg = 0.0;          // phi [deg]; Coriolis on when coriolis == true
   bool coriolis = false;
-  Vec2 wind = Vec2::Zero();           // W at 10 m [m/s]
-  double min_depth = 1e-3;            // H_min [m], friction denominator bound (spec 1.1)
-  double dry_depth = 1e-3;            // H_dry [m] (spec 1.5)
+  Vec2 wind = Vec2::Zero();  // W at 10 m [m/s]
+  double min_depth = 1e-3;   // H_min [m], friction denominator bound (spec 1.1)
+  double dry_depth = 1e-3;   // H_dry [m] (spec 1.5)
   std::vector<BoundaryCondition> boundaries;
 
   // Initial state: still water with eta linear in x between the two values (spec 8.2), or flat.
@@ -103,8 +59,8 @@ struct FlowConfig {
 enum class CouplingMode { frozen, one_way, two_way };
 
 struct TimeConfig {
-  double end = 3600.0;        // [s] simulated time
-  double step = 0.1;          // flow step dt [s]
+  double end = 3600.0;  // [s] simulated time
+  double step = 0.1;    // flow step dt [s]
   CouplingMode mode = CouplingMode::two_way;
   double steady_tolerance = 1e-8;  // steady/frozen mode: relative residual to stop at [-]
   int steady_max_iterations = 500;
@@ -116,38 +72,38 @@ enum class DragLaw { ganser, constant };
 
 struct BodyPhysics {
   DragLaw drag_law = DragLaw::ganser;
-  double drag_coefficient = 1.2;      // C_d when drag_law == constant [-]
-  double added_mass_coefficient = 0.5; // C_a [-] (M-5)
-  bool center_of_pressure = true;      // (M-7)
-  int drag_points = 1;                 // slices along the body (spec 3.2)
-  double rotation_coefficient = 1.0;   // C_r [-] (M-8)
-  double bed_friction = 0.6;           // mu_bed [-] (spec 3.4)
-  double rk_tolerance = 1e-6;          // RKF45 tolerance on the weighted error norm [-]
+  double drag_coefficient = 1.2;        // C_d when drag_law == constant [-]
+  double added_mass_coefficient = 0.5;  // C_a [-] (M-5)
+  bool center_of_pressure = true;       // (M-7)
+  int drag_points = 1;                  // slices along the body (spec 3.2)
+  double rotation_coefficient = 1.0;    // C_r [-] (M-8)
+  double bed_friction = 0.6;            // mu_bed [-] (spec 3.4)
+  double rk_tolerance = 1e-6;           // RKF45 tolerance on the weighted error norm [-]
 };
 
 struct ContactConfig {
-  double restitution = 1.0;         // e [-] (M-9); the paper's case uses 1
-  double friction = 0.5;            // mu_c [-]
+  double restitution = 1.0;  // e [-] (M-9); the paper's case uses 1
+  double friction = 0.5;     // mu_c [-]
   bool added_mass_in_contact = false;
-  int iterations = 20;              // impulse sweeps per contact solve
+  int iterations = 20;  // impulse sweeps per contact solve
 };
 
 /// Bodies released from a line at a rate, with sizes drawn uniformly in ranges (spec 5).
 struct Release {
-  Vec2 line_start, line_end;           // [m] release line
+  Vec2 line_start, line_end;                // [m] release line
   double start_time = 0.0, end_time = 0.0;  // [s]
-  double rate = 0.0;                   // bodies per minute [1/min]
+  double rate = 0.0;                        // bodies per minute [1/min]
   Shape shape = Shape::log;
-  double length_min = 20.0, length_max = 20.0;  // L [m]
-  double width_min = 1.0, width_max = 1.0;      // l [m]
-  double height = 1.0;                          // b for boxes [m]
+  double length_min = 20.0, length_max = 20.0;      // L [m]
+  double width_min = 1.0, width_max = 1.0;          // l [m]
+  double height = 1.0;                              // b for boxes [m]
   double density_min = 600.0, density_max = 600.0;  // [kg m^-3]
   double angle_min_deg = 0.0, angle_max_deg = 360.0;
   unsigned long seed = 1;
 };
 
 struct BodiesConfig {
-  std::vector<BodySpec> bodies;    // given explicitly
+  std::vector<BodySpec> bodies;  // given explicitly
   std::vector<Release> releases;
   BodyPhysics physics;
   ContactConfig contact;

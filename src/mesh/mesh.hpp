@@ -32,15 +32,15 @@ struct BoundaryEdge {
 struct Mesh {
   std::string source;  // file or generator, named in error messages
 
-  int vertex_count = 0;                       // P1 nodes: 0 .. vertex_count-1
-  std::vector<Vec2> nodes;                    // [m] all P2 nodes, vertices first
-  std::vector<std::array<int, 6>> elements;   // v0 v1 v2 m01 m12 m20, counter-clockwise
-  std::vector<std::array<int, 3>> neighbours; // across local edge k; boundary code when < 0
-  std::vector<double> area;                   // [m^2] of the straight triangle v0 v1 v2
-  std::vector<BoundaryEdge> boundary;         // every boundary edge, each in one named group
-  std::vector<std::string> group_names;       // physical group names of the boundary
-  std::vector<long> node_tags;                // tag of each node in its source file (messages)
-  std::vector<long> element_tags;             // tag of each element in its source file
+  int vertex_count = 0;                        // P1 nodes: 0 .. vertex_count-1
+  std::vector<Vec2> nodes;                     // [m] all P2 nodes, vertices first
+  std::vector<std::array<int, 6>> elements;    // v0 v1 v2 m01 m12 m20, counter-clockwise
+  std::vector<std::array<int, 3>> neighbours;  // across local edge k; boundary code when < 0
+  std::vector<double> area;                    // [m^2] of the straight triangle v0 v1 v2
+  std::vector<BoundaryEdge> boundary;          // every boundary edge, each in one named group
+  std::vector<std::string> group_names;        // physical group names of the boundary
+  std::vector<long> node_tags;                 // tag of each node in its source file (messages)
+  std::vector<long> element_tags;              // tag of each element in its source file
 
   int node_count() const { return static_cast<int>(nodes.size()); }
   int element_count() const { return static_cast<int>(elements.size()); }
@@ -66,8 +66,8 @@ struct Mesh {
 /// What a reader or generator hands to build_mesh: plain lists, in the file's numbering.
 struct RawMesh {
   std::string source;
-  std::vector<Vec2> nodes;                // [m]
-  std::vector<long> node_tags;            // tag of each node in the file
+  std::vector<Vec2> nodes;                  // [m]
+  std::vector<long> node_tags;              // tag of each node in the file
   std::vector<std::vector<int>> triangles;  // 3 or 6 indices into nodes each (Gmsh order)
   std::vector<long> triangle_tags;
   struct Line {

@@ -33,6 +33,8 @@ RawMesh make_rectangle_raw(const RectangleSpec& s) {
   return raw;
 }
 
-Mesh make_rectangle_mesh(const RectangleSpec& spec) { return build_mesh(make_rectangle_raw(spec)); }
+Mesh make_rectangle_mesh(const RectangleSpec& spec) {
+  return build_mesh(make_rectangle_raw(spec));
+}
 
 }  // namespace flotsam

@@ -7,10 +7,10 @@
 namespace flotsam {
 
 struct RectangleSpec {
-  double x0 = 0.0, y0 = 0.0;  // [m] lower-left corner
-  double length = 1.0;        // Lx [m]
-  double width = 1.0;         // Ly [m]
-  int nx = 1, ny = 1;         // cells along x and y
+  double x0 = 0.0, y0 = 0.0;        // [m] lower-left corner
+  double length = 1.0;              // Lx [m]
+  double width = 1.0;               // Ly [m]
+  int nx = 1, ny = 1;               // cells along x and y
   bool alternate_diagonals = true;  // criss-cross pattern (no preferred direction)
 };
 

@@ -28,7 +28,8 @@ RawMesh two_triangles() {
   raw.node_tags = {11, 12, 13, 14};
   raw.triangles = {{0, 1, 2}, {0, 2, 3}};
   raw.triangle_tags = {101, 102};
-  raw.lines = {{{0, 1}, "bottom", 1}, {{1, 2}, "right", 2}, {{2, 3}, "top", 3}, {{3, 0}, "left", 4}};
+  raw.lines = {
+      {{0, 1}, "bottom", 1}, {{1, 2}, "right", 2}, {{2, 3}, "top", 3}, {{3, 0}, "left", 4}};
   return raw;
 }
 
@@ -52,8 +53,9 @@ TEST(MeshBuilder, AdjacencyIsSymmetricAndMidNodesAreShared) {
     for (int k = 0; k < 3; ++k) {
       const int n = mesh.neighbours[e][k];
       const auto nodes = mesh.edge_nodes(e, k);
-      EXPECT_NEAR((mesh.nodes[nodes[2]] - 0.5 * (mesh.nodes[nodes[0]] + mesh.nodes[nodes[1]])).norm(),
-                  0.0, 1e-14);
+      EXPECT_NEAR(
+          (mesh.nodes[nodes[2]] - 0.5 * (mesh.nodes[nodes[0]] + mesh.nodes[nodes[1]])).norm(), 0.0,
+          1e-14);
       if (Mesh::is_boundary(n)) {
         const auto& b = mesh.boundary[Mesh::boundary_edge_of(n)];
         EXPECT_EQ(b.element, e);
@@ -133,12 +135,13 @@ TEST(MeshBuilder, RejectsABoundaryEdgeWithoutAName) {
 
 TEST(MeshBuilder, RejectsNeighboursDisagreeingOnAMidNode) {
   RawMesh raw = two_triangles();
-  for (Vec2 p : {Vec2(0.5, 0), Vec2(1, 0.5), Vec2(0.5, 0.5), Vec2(0.5, 0.5), Vec2(0.5, 1),
-                 Vec2(0, 0.5)})
+  for (Vec2 p :
+       {Vec2(0.5, 0), Vec2(1, 0.5), Vec2(0.5, 0.5), Vec2(0.5, 0.5), Vec2(0.5, 1), Vec2(0, 0.5)})
     raw.nodes.push_back(p), raw.node_tags.push_back(20 + static_cast<long>(raw.nodes.size()));
   raw.triangles[0] = {0, 1, 2, 4, 5, 6};
   raw.triangles[1] = {0, 2, 3, 7, 8, 9};  // 7 duplicates 6 at the same place: not shared
-  EXPECT_THAT(error_of(raw), HasSubstr("share the edge between nodes 11 and 13 but not its mid node"));
+  EXPECT_THAT(error_of(raw),
+              HasSubstr("share the edge between nodes 11 and 13 but not its mid node"));
 }
 
 }  // namespace
