@@ -32,6 +32,7 @@ struct BoundaryCondition {
   std::string group;   // mesh physical group
   TimeSeries value;    // eta_b [m] or Q [m^3/s]
   TimeSeries value_y;  // velocity: u_b = (value, value_y) [m/s]
+  int line = 0;        // line of the group's key in the case file, for messages (0: built in code)
 };
 
 struct FlowConfig {
@@ -86,6 +87,11 @@ struct ContactConfig {
   double friction = 0.5;     // mu_c [-]
   bool added_mass_in_contact = false;
   int iterations = 20;  // impulse sweeps per contact solve
+  // Contact solver settings (src/contact, docs/model.md "Contacts").
+  double restitution_threshold = 0.01;  // [m/s] slower approaches do not bounce (resting contact)
+  double velocity_tolerance = 1e-6;  // [m/s] sweeps stop when no point's velocity changes more
+  int position_iterations = 10;      // position-correction sweeps (at most)
+  double allowed_overlap = 0.005;  // [-] overlap left uncorrected, fraction of the thinner width
 };
 
 /// Bodies released from a line at a rate, with sizes drawn uniformly in ranges (spec 5).

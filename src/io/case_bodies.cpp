@@ -1,0 +1,168 @@
+// The case file's `bodies` section (docs/case-format.md, spec 2-5).
+#include <fmt/format.h>
+
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "core/constants.hpp"
+#include "io/case_sections.hpp"
+
+namespace flotsam {
+
+namespace {
+
+constexpr double radians_per_degree = pi / 180.0;  // [rad/deg]
+
+BodyPhysics read_physics(const YamlMap& m) {
+  BodyPhysics p;
+  if (const auto law = m.find("drag_law")) {
+    p.drag_law =
+        law->choice<DragLaw>({{"ganser", DragLaw::ganser}, {"constant", DragLaw::constant}});
+  }
+  if (p.drag_law == DragLaw::constant)
+    p.drag_coefficient = m.number("drag_coefficient", p.drag_coefficient, Range::positive());
+  else
+    m.forbid("drag_coefficient", "only used with drag_law 'constant' (ganser computes C_d)");
+  p.added_mass_coefficient =
+      m.number("added_mass_coefficient", p.added_mass_coefficient, Range::non_negative());
+  p.center_of_pressure = m.boolean("center_of_pressure", p.center_of_pressure);
+  p.drag_points =
+      static_cast<int>(m.integer("drag_points", p.drag_points, Range::between(1, 1000)));
+  p.rotation_coefficient =
+      m.number("rotation_coefficient", p.rotation_coefficient, Range::non_negative());
+  p.bed_friction = m.number("bed_friction", p.bed_friction, Range::non_negative());
+  p.rk_tolerance = m.number("rk_tolerance", p.rk_tolerance, Range::positive());
+  return p;
+}
+
+ContactConfig read_contact(const YamlMap& m) {
+  ContactConfig c;
+  c.restitution = m.number("restitution", c.restitution, Range::between(0.0, 1.0));
+  c.friction = m.number("friction", c.friction, Range::non_negative());
+  c.added_mass_in_contact = m.boolean("added_mass_in_contact", c.added_mass_in_contact);
+  c.iterations = static_cast<int>(m.integer("iterations", c.iterations, Range::between(1, 1e6)));
+  c.restitution_threshold =
+      m.number("restitution_threshold", c.restitution_threshold, Range::non_negative());
+  c.velocity_tolerance = m.number("velocity_tolerance", c.velocity_tolerance, Range::positive());
+  c.position_iterations = static_cast<int>(
+      m.integer("position_iterations", c.position_iterations, Range::between(0, 1e6)));
+  c.allowed_overlap = m.number("allowed_overlap", c.allowed_overlap, Range{0.0, 1.0, false, true});
+  return c;
+}
+
+Shape read_shape(const YamlMap& m) {
+  const auto shape = m.find("shape");
+  return shape ? shape->choice<Shape>({{"log", Shape::log}, {"box", Shape::box}}) : Shape::log;
+}
+
+// A log's height is its diameter; only a box has its own.
+double read_height(const YamlMap& m, Shape shape, double width, double fallback) {
+  if (shape == Shape::log) {
+    m.forbid("height", "a log's height is its width (its diameter)");
+    return width;
+  }
+  return m.number("height", fallback, Range::positive());
+}
+
+BodySpec read_body(const YamlValue& item) {
+  const YamlMap m = item.map();
+  BodySpec b;
+  b.shape = read_shape(m);
+  const auto length = m.find("length"), width = m.find("width");
+  b.length = length ? length->number(Range::positive()) : b.length;
+  b.width = width ? width->number(Range::positive()) : b.width;
+  if (b.width > b.length) {  // blame the key the user gave
+    (width    ? *width
+     : length ? *length
+              : item)
+        .fail(fmt::format("the width {} m exceeds the length {} m; length is the long side",
+                          b.width, b.length));
+  }
+  b.height = read_height(m, b.shape, b.width, b.height);
+  b.density = m.number("density", b.density, Range::positive());
+  b.position = {m.get("x", "x_G [m]").number(), m.get("y", "y_G [m]").number()};
+  b.angle = m.number("angle_deg", 0.0) * radians_per_degree;
+  b.velocity = {m.number("u", 0.0), m.number("v", 0.0)};
+  b.angular_velocity = m.number("omega", 0.0);
+  b.id = m.integer("id", b.id, Range::non_negative());
+  return b;
+}
+
+// `key: value` or `key: [min, max]` with min <= max.
+std::pair<double, double> read_span(const YamlMap& m, std::string_view key,
+                                    std::pair<double, double> fallback, Range range) {
+  const auto value = m.find(key);
+  if (!value) return fallback;
+  if (!value->is_list()) {
+    const double x = value->number(range);
+    return {x, x};
+  }
+  const auto items = value->list();
+  if (items.size() != 2)
+    value->fail(
+        fmt::format("expected a number or a range [min, max], got a list of {}", items.size()));
+  const double lo = items[0].number(range), hi = items[1].number(range);
+  if (lo > hi)
+    value->fail(fmt::format("expected [min, max] with min <= max, got [{}, {}]", lo, hi));
+  return {lo, hi};
+}
+
+Release read_release(const YamlValue& item) {
+  const YamlMap m = item.map();
+  Release r;
+  const YamlValue line = m.get("line", "the release line [[x0, y0], [x1, y1]] [m]");
+  const auto ends = line.list();
+  if (ends.size() != 2)
+    line.fail(fmt::format("expected two points [[x0, y0], [x1, y1]], got {}", ends.size()));
+  r.line_start = ends[0].vec2();
+  r.line_end = ends[1].vec2();
+  r.start_time = m.number("start", r.start_time, Range::non_negative());
+  const YamlValue end = m.get("end", "the time the release stops [s]");
+  r.end_time = end.number(Range{r.start_time, std::numeric_limits<double>::infinity(), true});
+  r.rate = m.get("rate", "bodies per minute").number(Range::positive());
+  r.shape = read_shape(m);
+  std::tie(r.length_min, r.length_max) =
+      read_span(m, "length", {r.length_min, r.length_max}, Range::positive());
+  std::tie(r.width_min, r.width_max) =
+      read_span(m, "width", {r.width_min, r.width_max}, Range::positive());
+  if (r.width_max > r.length_min) {
+    item.fail(
+        fmt::format("the widest body ({} m) would exceed the shortest ({} m); length is "
+                    "the long side",
+                    r.width_max, r.length_min));
+  }
+  r.height = read_height(m, r.shape, r.width_max, r.height);
+  std::tie(r.density_min, r.density_max) =
+      read_span(m, "density", {r.density_min, r.density_max}, Range::positive());
+  std::tie(r.angle_min_deg, r.angle_max_deg) =
+      read_span(m, "angle_deg", {r.angle_min_deg, r.angle_max_deg}, Range::any());
+  r.seed = static_cast<unsigned long>(
+      m.integer("seed", static_cast<long>(r.seed), Range::non_negative()));
+  return r;
+}
+
+}  // namespace
+
+BodiesConfig read_bodies(const YamlMap& m) {
+  BodiesConfig bodies;
+  bodies.physics = read_physics(m.map("physics"));
+  bodies.contact = read_contact(m.map("contact"));
+  std::map<long, int> id_lines;  // id -> line where given
+  if (const auto list = m.find("list")) {
+    for (const YamlValue& item : list->list()) {
+      bodies.bodies.push_back(read_body(item));
+      const long id = bodies.bodies.back().id;
+      if (id < 0) continue;
+      const YamlValue id_value = item.map().get("id");
+      if (const auto [it, inserted] = id_lines.emplace(id, id_value.line()); !inserted)
+        id_value.fail(fmt::format("id {} is already used by the body on line {}", id, it->second));
+    }
+  }
+  if (const auto releases = m.find("release")) {
+    for (const YamlValue& item : releases->list()) bodies.releases.push_back(read_release(item));
+  }
+  return bodies;
+}
+
+}  // namespace flotsam

@@ -1,0 +1,248 @@
+// The case file's schema: one reader per section, in the order of docs/case-format.md. Each
+// reader takes its defaults from the structures of io/case.hpp and states its ranges; the
+// checked-access layer (io/yaml_reader.hpp) turns every violation into "file:line: key: ...".
+#include "io/case_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/case_sections.hpp"
+#include "io/yaml_reader.hpp"
+
+namespace flotsam {
+
+namespace {
+
+// ---- mesh ---------------------------------------------------------------------------------
+
+std::vector<Pier> read_piers(const YamlMap& channel_map, const ChannelGeometry& channel) {
+  std::vector<Pier> piers;
+  std::vector<int> lines;
+  const auto list = channel_map.find("piers");
+  if (!list) return piers;
+  for (const YamlValue& item : list->list()) {
+    const YamlMap m = item.map();
+    const Pier pier{{m.get("x").number(), m.get("y").number()},
+                    m.get("radius").number(Range::positive())};
+    const Vec2 c = pier.centre;
+    const double r = pier.radius;
+    if (!(c.x() - r > 0.0 && c.x() + r < channel.length && c.y() - r > 0.0 &&
+          c.y() + r < channel.width)) {
+      item.fail(
+          fmt::format("a pier at ({}, {}) of radius {} m does not fit inside the channel "
+                      "[0, {}] x [0, {}] m; it must clear every bank",
+                      c.x(), c.y(), r, channel.length, channel.width));
+    }
+    for (std::size_t j = 0; j < piers.size(); ++j) {
+      if ((piers[j].centre - c).norm() <= piers[j].radius + r)
+        item.fail(fmt::format("overlaps pier {} (line {})", j + 1, lines[j]));
+    }
+    piers.push_back(pier);
+    lines.push_back(item.line());
+  }
+  return piers;
+}
+
+ChannelGeometry read_channel(const YamlMap& m) {
+  ChannelGeometry g;
+  g.length = m.number("length", g.length, Range::positive());
+  g.width = m.number("width", g.width, Range::positive());
+  g.mesh_size = m.number("mesh_size", g.mesh_size, Range::positive());
+  g.pier_mesh_size = m.number("pier_mesh_size", g.pier_mesh_size, Range::positive());
+  g.refine_distance = m.number("refine_distance", g.refine_distance, Range::non_negative());
+  g.piers = read_piers(m, g);
+  return g;
+}
+
+BendGeometry read_bend(const YamlMap& m) {
+  BendGeometry g;
+  g.centre = m.vec2("centre", g.centre);
+  g.width = m.number("width", g.width, Range::positive());
+  g.inner_radius = m.number("inner_radius", g.inner_radius, Range::positive());
+  g.inlet_length = m.number("inlet_length", g.inlet_length, Range::positive());
+  g.outlet_length = m.number("outlet_length", g.outlet_length, Range::positive());
+  g.mesh_size = m.number("mesh_size", g.mesh_size, Range::positive());
+  return g;
+}
+
+PolygonGeometry read_polygon(const YamlMap& m) {
+  PolygonGeometry g;
+  const YamlValue points = m.get("points", "the corners [[x, y], ...] in order");
+  for (const YamlValue& p : points.list()) g.points.push_back(p.vec2());
+  if (g.points.size() < 3)
+    points.fail(fmt::format("expected at least 3 corners, got {}", g.points.size()));
+  const YamlValue groups = m.get("groups", "one boundary group name per side");
+  for (const YamlValue& name : groups.list()) g.groups.push_back(name.text());
+  if (g.groups.size() != g.points.size()) {
+    groups.fail(
+        fmt::format("expected one group per side, {} (side i joins corner i to corner "
+                    "i+1), got {}",
+                    g.points.size(), g.groups.size()));
+  }
+  g.mesh_size = m.number("mesh_size", g.mesh_size, Range::positive());
+  return g;
+}
+
+MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder) {
+  MeshSource mesh;
+  const std::string kind = m.only_one_of({"file", "channel", "bend", "polygon"});
+  if (kind.empty()) {
+    m.check_keys();  // a misspelt kind is reported as such
+    m.fail("expected one of: file, channel, bend, polygon");
+  }
+  if (kind == "file") {
+    const YamlValue file = m.get("file");
+    std::filesystem::path path = file.text();
+    if (path.is_relative()) path = (case_folder / path).lexically_normal();
+    if (!std::filesystem::is_regular_file(path)) {
+      file.fail(
+          fmt::format("no such mesh file '{}' (a relative path is read from the case "
+                      "file's folder)",
+                      path.string()));
+    }
+    mesh.kind = MeshSource::Kind::file;
+    mesh.file = path.string();
+  } else if (kind == "channel") {
+    mesh.kind = MeshSource::Kind::channel;
+    mesh.channel = read_channel(m.get("channel").map());
+  } else if (kind == "bend") {
+    mesh.kind = MeshSource::Kind::bend;
+    mesh.bend = read_bend(m.get("bend").map());
+  } else {
+    mesh.kind = MeshSource::Kind::polygon;
+    mesh.polygon = read_polygon(m.get("polygon").map());
+  }
+  return mesh;
+}
+
+// ---- bed ----------------------------------------------------------------------------------
+
+BedConfig read_bed(const YamlMap& m) {
+  BedConfig bed;
+  if (const auto profile = m.find("profile_x")) {
+    m.forbid("level", "the bed is given by profile_x");
+    m.forbid("slope", "the bed is given by profile_x");
+    bed.kind = BedConfig::Kind::table;
+    bed.profile_x = profile->series("x");
+    if (bed.profile_x.is_constant())
+      profile->fail("expected a table [[x, z_b], ...]; for a flat bed give 'level'");
+    return bed;
+  }
+  bed.level = m.number("level", bed.level);
+  if (const auto slope = m.find("slope")) {
+    bed.kind = BedConfig::Kind::slope;
+    bed.slope = slope->is_list() ? slope->vec2() : Vec2(slope->number(), 0.0);
+  }
+  return bed;
+}
+
+// ---- time and output ----------------------------------------------------------------------
+
+TimeConfig read_time(const YamlMap& m) {
+  TimeConfig time;
+  time.end = m.get("end", "the simulated time [s]").number(Range::positive());
+  const auto step = m.find("step");
+  time.step = step ? step->number(Range::positive()) : time.step;
+  if (step && time.step > time.end)
+    step->fail(fmt::format("the step {} s is longer than time.end = {} s", time.step, time.end));
+  if (const auto mode = m.find("mode")) {
+    time.mode = mode->choice<CouplingMode>({{"frozen", CouplingMode::frozen},
+                                            {"one-way", CouplingMode::one_way},
+                                            {"two-way", CouplingMode::two_way}});
+  }
+  time.steady_tolerance = m.number("steady_tolerance", time.steady_tolerance, Range::positive());
+  time.steady_max_iterations = static_cast<int>(
+      m.integer("steady_max_iterations", time.steady_max_iterations, Range::between(1, 1e9)));
+  return time;
+}
+
+OutputConfig read_output(const YamlMap& m) {
+  OutputConfig output;
+  if (const auto directory = m.find("directory")) {
+    output.directory = directory->text();
+    if (output.directory.empty()) directory->fail("expected a folder name, got an empty text");
+  }
+  output.interval = m.number("interval", output.interval, Range::positive());
+  output.overwrite = m.boolean("overwrite", output.overwrite);
+  return output;
+}
+
+std::string read_name(const YamlMap& root, const std::string& file_name) {
+  const auto value = root.find("name");
+  if (!value) {
+    const std::string stem = std::filesystem::path(file_name).stem().string();
+    return stem.empty() ? "case" : stem;
+  }
+  const std::string name = value->text();
+  const bool ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
+  });
+  if (!ok) {
+    value->fail(
+        fmt::format("expected a name of letters, digits, '_', '-' and '.' (it names "
+                    "the output folder), got '{}'",
+                    name));
+  }
+  return name;
+}
+
+}  // namespace
+
+Case parse_case(const std::string& text, const std::string& file_name) {
+  YamlDocument document(text, file_name);
+  const YamlMap root = document.root();
+  Case c;
+  c.file = file_name;
+  c.name = read_name(root, file_name);
+  const std::filesystem::path case_folder = std::filesystem::path(file_name).parent_path();
+  c.mesh = read_mesh(root.get("mesh", "where the mesh comes from").map(), case_folder);
+  c.bed = read_bed(root.map("bed"));
+  c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map());
+  c.time = read_time(root.get("time", "at least time.end").map());
+  c.bodies = read_bodies(root.map("bodies"));
+  c.output = read_output(root.map("output"));
+  document.check_no_unknown_keys();
+  return c;
+}
+
+Case read_case(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw_input_error("cannot open the case file '{}': {}", path,
+                      std::filesystem::exists(path) ? "not readable" : "no such file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_case(text.str(), path);
+}
+
+void check_case_against_mesh(const Case& c, const std::vector<std::string>& mesh_groups) {
+  const std::string where = c.file.empty() ? "case" : c.file;
+  const std::string listed =
+      mesh_groups.empty() ? "none" : fmt::format("{}", fmt::join(mesh_groups, ", "));
+  for (const BoundaryCondition& bc : c.flow.boundaries) {
+    if (std::find(mesh_groups.begin(), mesh_groups.end(), bc.group) != mesh_groups.end()) continue;
+    const std::string at = bc.line > 0 ? fmt::format("{}:{}", where, bc.line) : where;
+    throw_input_error(
+        "{}: flow.boundaries.{}: the mesh has no boundary group '{}'; its groups "
+        "are: {}",
+        at, bc.group, bc.group, listed);
+  }
+  for (const std::string& group : mesh_groups) {
+    const auto has_condition = [&](const BoundaryCondition& bc) { return bc.group == group; };
+    if (std::any_of(c.flow.boundaries.begin(), c.flow.boundaries.end(), has_condition)) continue;
+    throw_input_error(
+        "{}: flow.boundaries: the mesh's boundary group '{}' has no condition; "
+        "every group needs one (a bank or a pier: '{}: {{type: wall}}'); the "
+        "mesh's groups are: {}",
+        where, group, group, listed);
+  }
+}
+
+}  // namespace flotsam

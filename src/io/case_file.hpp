@@ -1,0 +1,24 @@
+#pragma once
+// Case files: YAML in, a checked Case out (docs/case-format.md lists every key with its unit,
+// default and range). Bad input is an InputError "file:line: key.path: what was expected".
+#include <string>
+#include <vector>
+
+#include "io/case.hpp"
+
+namespace flotsam {
+
+/// Reads and checks the case file at `path`. Relative paths inside it (mesh.file) are resolved
+/// against the case file's folder.
+Case read_case(const std::string& path);
+
+/// Parses the text of a case file; `file_name` is used in messages, for the default name (its
+/// stem) and to resolve relative paths (its folder).
+Case parse_case(const std::string& text, const std::string& file_name);
+
+/// Checks that the case's boundary conditions and the mesh's boundary groups match one to one:
+/// a condition on a group the mesh does not have, or a mesh group without a condition, is an
+/// InputError naming the case file, the group, and the mesh's groups.
+void check_case_against_mesh(const Case& c, const std::vector<std::string>& mesh_groups);
+
+}  // namespace flotsam

@@ -1,0 +1,129 @@
+// The case file's `flow` section (docs/case-format.md, spec 1).
+#include <fmt/format.h>
+
+#include "io/case_sections.hpp"
+
+namespace flotsam {
+
+namespace {
+
+// nu from the key `viscosity`, or from `reynolds` via nu = U_ref L_ref / Re (spec 1.2).
+double read_viscosity(const YamlMap& m, double fallback) {
+  const std::string given = m.only_one_of({"viscosity", "reynolds"});
+  if (given == "viscosity") return m.get("viscosity").number(Range::non_negative());
+  if (given.empty()) return fallback;
+  const YamlMap re = m.get("reynolds").map();
+  const double number = re.get("number", "Re [-]").number(Range::positive());
+  const double U = re.get("reference_velocity", "U_ref [m/s]").number(Range::positive());
+  const double L = re.get("reference_length", "L_ref [m]").number(Range::positive());
+  return U * L / number;  // spec 1.2
+}
+
+void read_friction(const YamlMap& m, FlowConfig& flow) {
+  const auto law = m.get("law").choice<FrictionLaw>({{"none", FrictionLaw::none},
+                                                     {"manning", FrictionLaw::manning},
+                                                     {"chezy", FrictionLaw::chezy},
+                                                     {"strickler", FrictionLaw::strickler}});
+  flow.friction = law;
+  if (law == FrictionLaw::none) {
+    m.forbid("coefficient", "not used with law 'none'");
+    return;
+  }
+  const char* unit = law == FrictionLaw::manning ? "Manning's n [s m^-1/3]"
+                     : law == FrictionLaw::chezy ? "Chezy's C [m^1/2 s^-1]"
+                                                 : "Strickler's K [m^1/3 s^-1]";
+  flow.friction_coefficient = m.get("coefficient", unit).number(Range::positive());
+}
+
+void read_turbulence(const YamlMap& m, FlowConfig& flow) {
+  flow.turbulence =
+      m.get("model").choice<TurbulenceModel>({{"none", TurbulenceModel::none},
+                                              {"smagorinsky", TurbulenceModel::smagorinsky},
+                                              {"mixing-length", TurbulenceModel::mixing_length}});
+  if (flow.turbulence == TurbulenceModel::smagorinsky) {
+    flow.smagorinsky_constant =
+        m.number("smagorinsky_constant", flow.smagorinsky_constant, Range::positive());
+  } else {
+    m.forbid("smagorinsky_constant", "only used with model 'smagorinsky'");
+  }
+}
+
+// Still water with eta linear in x between two values (spec 8.2), or flat.
+void read_initial(const YamlMap& m, FlowConfig& flow) {
+  const std::string given = m.only_one_of({"eta", "eta_start"});
+  if (given.empty()) m.fail("expected 'eta' [m], or 'eta_start' and 'eta_end' [m]");
+  if (given == "eta") {
+    m.forbid("eta_end", "with 'eta' the surface is flat; use eta_start and eta_end for a slope");
+    flow.initial_eta_start = flow.initial_eta_end = m.get("eta").number();
+    return;
+  }
+  flow.initial_eta_start = m.get("eta_start").number();
+  flow.initial_eta_end = m.get("eta_end", "eta at the largest x [m]").number();
+}
+
+BoundaryCondition read_boundary(const std::string& group, const YamlValue& value) {
+  using Kind = BoundaryCondition::Kind;
+  const YamlMap m = value.map();
+  BoundaryCondition bc;
+  bc.group = group;
+  bc.line = value.key_line();
+  bc.kind = m.get("type").choice<Kind>({{"elevation", Kind::elevation},
+                                        {"discharge", Kind::discharge},
+                                        {"velocity", Kind::velocity},
+                                        {"wall", Kind::wall},
+                                        {"noslip", Kind::noslip}});
+  switch (bc.kind) {
+    case Kind::elevation:
+    case Kind::discharge: {
+      const bool is_eta = bc.kind == Kind::elevation;
+      m.forbid("u", "only a velocity condition takes u and v");
+      m.forbid("v", "only a velocity condition takes u and v");
+      bc.value = m.get("value", is_eta ? "eta_b [m], a number or a table [[t, eta_b], ...]"
+                                       : "Q [m^3/s], a number or a table [[t, Q], ...]")
+                     .series("t");
+      break;
+    }
+    case Kind::velocity:
+      m.forbid("value", "a velocity condition takes u and v [m/s]");
+      bc.value = m.get("u", "u_b [m/s], a number or a table [[t, u], ...]").series("t");
+      bc.value_y = m.get("v", "v_b [m/s], a number or a table [[t, v], ...]").series("t");
+      break;
+    case Kind::wall:
+    case Kind::noslip:
+      for (const char* key : {"value", "u", "v"}) m.forbid(key, "a wall takes no value");
+      break;
+  }
+  return bc;
+}
+
+}  // namespace
+
+FlowConfig read_flow(const YamlMap& m) {
+  FlowConfig flow;
+  flow.gravity = m.number("gravity", flow.gravity, Range::positive());
+  flow.water_density = m.number("density", flow.water_density, Range::positive());
+  flow.viscosity = read_viscosity(m, flow.viscosity);
+  if (m.has("friction")) read_friction(m.get("friction").map(), flow);
+  if (m.has("turbulence")) read_turbulence(m.get("turbulence").map(), flow);
+  if (m.has("coriolis")) {
+    flow.coriolis = true;
+    flow.latitude_deg = m.get("coriolis")
+                            .map()
+                            .get("latitude_deg", "phi [deg]")
+                            .number(Range::between(-90.0, 90.0));
+  }
+  if (m.has("wind")) flow.wind = m.get("wind").map().get("velocity", "W [m/s] as [x, y]").vec2();
+  flow.min_depth = m.number("min_depth", flow.min_depth, Range::positive());
+  flow.dry_depth = m.number("dry_depth", flow.dry_depth, Range::positive());
+  read_initial(m.get("initial", "the initial water surface").map(), flow);
+
+  const YamlValue boundaries =
+      m.get("boundaries", "a condition for every boundary group of the mesh");
+  for (const auto& [group, value] : boundaries.map().entries())
+    flow.boundaries.push_back(read_boundary(group, value));
+  if (flow.boundaries.empty())
+    boundaries.fail("expected a map of boundary group -> {type: ..., value: ...}");
+  return flow;
+}
+
+}  // namespace flotsam

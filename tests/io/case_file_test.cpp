@@ -1,0 +1,516 @@
+// Verifies that case files are read into the exact values they give (the two examples, the
+// defaults), and that every kind of bad input is an InputError naming the file, the line, the
+// key path and what was expected.
+#include "io/case_file.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "mesh/mesh_generator.hpp"
+#include "mesh/point_locator.hpp"
+
+namespace flotsam {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const std::string examples = std::string(FLOTSAM_SOURCE_DIR) + "/examples/";
+
+// A minimal valid case; tests edit one line of it, so the line numbers below stay true.
+const std::string base_case = R"(mesh:
+  channel: {length: 100, width: 20}
+flow:
+  friction: {law: manning, coefficient: 0.03}
+  initial: {eta: 1.0}
+  boundaries:
+    inflow: {type: elevation, value: 1.0}
+    outflow: {type: elevation, value: 0.9}
+    bank_right: {type: wall}
+    bank_left: {type: wall}
+time: {end: 10, step: 0.5}
+)";
+
+// base_case with `from` replaced by `to` (`from` must occur).
+std::string edited(const std::string& from, const std::string& to) {
+  std::string text = base_case;
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// base_case with `extra` appended (it starts on line 12).
+std::string appended(const std::string& extra) {
+  return base_case + extra;
+}
+
+// The message of the InputError parsing `text` throws, or "no error".
+std::string error_of(const std::string& text) {
+  try {
+    parse_case(text, "case.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+double degrees(double deg) {
+  return deg * pi / 180.0;
+}
+
+const std::vector<std::string> channel_groups = {"inflow", "outflow", "bank_right", "bank_left",
+                                                 "pier_1", "pier_2",  "pier_3",     "pier_4"};
+
+// ---- the examples -------------------------------------------------------------------------
+
+TEST(CaseFile, BridgePiersExampleHoldsThePapersChannel) {
+  const Case c = read_case(examples + "bridge_piers.yaml");
+  EXPECT_EQ(c.name, "bridge_piers");
+  ASSERT_EQ(c.mesh.kind, MeshSource::Kind::channel);
+  EXPECT_EQ(c.mesh.channel.length, 1500.0);
+  EXPECT_EQ(c.mesh.channel.width, 170.0);
+  ASSERT_EQ(c.mesh.channel.piers.size(), 4u);
+  EXPECT_EQ(c.mesh.channel.piers[2].centre, Vec2(900.0, 42.5));  // pier 3
+  EXPECT_EQ(c.mesh.channel.piers[1].centre, Vec2(600.0, 127.5));
+  for (const Pier& p : c.mesh.channel.piers) EXPECT_EQ(p.radius, 30.0);
+  EXPECT_EQ(c.bed.kind, BedConfig::Kind::flat);
+  EXPECT_EQ(c.bed.level, 0.0);
+
+  EXPECT_EQ(c.flow.water_density, 1000.0);
+  EXPECT_EQ(c.flow.friction, FrictionLaw::manning);
+  EXPECT_EQ(c.flow.friction_coefficient, 0.03);
+  EXPECT_NEAR(c.flow.viscosity, 0.5 * 60.0 / 1000.0, 1e-15);  // nu = U D / Re
+  EXPECT_EQ(c.flow.initial_eta_start, 10.0);
+  EXPECT_EQ(c.flow.initial_eta_end, 9.80);
+  ASSERT_EQ(c.flow.boundaries.size(), 8u);
+  EXPECT_EQ(c.flow.boundaries[0].group, "inflow");
+  EXPECT_EQ(c.flow.boundaries[0].kind, BoundaryCondition::Kind::elevation);
+  EXPECT_EQ(c.flow.boundaries[0].value(0.0), 10.0);
+  EXPECT_EQ(c.flow.boundaries[1].group, "outflow");
+  EXPECT_EQ(c.flow.boundaries[1].value(1e3), 9.80);
+  for (std::size_t i = 2; i < 8; ++i)
+    EXPECT_EQ(c.flow.boundaries[i].kind, BoundaryCondition::Kind::wall) << i;
+  EXPECT_NO_THROW(check_case_against_mesh(c, channel_groups));
+
+  EXPECT_EQ(c.time.end, 1800.0);
+  EXPECT_EQ(c.time.step, 0.1);
+  EXPECT_EQ(c.time.mode, CouplingMode::two_way);
+  EXPECT_EQ(c.bodies.contact.restitution, 1.0);
+  ASSERT_EQ(c.bodies.bodies.size(), 7u);
+  for (const BodySpec& b : c.bodies.bodies) {
+    EXPECT_EQ(b.shape, Shape::log);
+    EXPECT_EQ(b.length, 20.0);
+    EXPECT_EQ(b.width, 1.0);
+    EXPECT_EQ(b.height, 1.0);  // a log's height is its diameter
+    EXPECT_EQ(b.velocity, Vec2::Zero());
+    EXPECT_EQ(b.angular_velocity, 0.0);
+    EXPECT_GE(b.position.x(), 300.0);
+    EXPECT_LE(b.position.x(), 500.0);
+  }
+  EXPECT_EQ(c.bodies.bodies[0].position, Vec2(320.0, 30.0));
+  EXPECT_DOUBLE_EQ(c.bodies.bodies[0].angle, degrees(15.0));
+  EXPECT_DOUBLE_EQ(c.bodies.bodies[5].angle, degrees(135.0));
+  EXPECT_EQ(c.output.directory, "out");
+  EXPECT_EQ(c.output.interval, 60.0);
+}
+
+TEST(CaseFile, Bend180ExampleHoldsRozovskiisFlume) {
+  const Case c = read_case(examples + "bend180.yaml");
+  EXPECT_EQ(c.name, "bend180");
+  ASSERT_EQ(c.mesh.kind, MeshSource::Kind::bend);
+  EXPECT_EQ(c.mesh.bend.centre, Vec2::Zero());
+  EXPECT_EQ(c.mesh.bend.width, 0.8);
+  EXPECT_EQ(c.mesh.bend.inner_radius, 0.4);
+  EXPECT_EQ(c.mesh.bend.inlet_length, 3.0);
+  EXPECT_EQ(c.mesh.bend.outlet_length, 3.0);
+  EXPECT_EQ(c.flow.friction, FrictionLaw::manning);
+  EXPECT_EQ(c.flow.friction_coefficient, 0.012);
+  EXPECT_EQ(c.flow.turbulence, TurbulenceModel::mixing_length);
+  EXPECT_EQ(c.flow.viscosity, 1e-6);
+  EXPECT_EQ(c.flow.initial_eta_start, 0.058);
+  EXPECT_EQ(c.flow.initial_eta_end, 0.058);
+  ASSERT_EQ(c.flow.boundaries.size(), 4u);
+  EXPECT_EQ(c.flow.boundaries[0].kind, BoundaryCondition::Kind::discharge);
+  EXPECT_EQ(c.flow.boundaries[0].value(10.0), 0.0123);
+  EXPECT_EQ(c.flow.boundaries[1].kind, BoundaryCondition::Kind::elevation);
+  EXPECT_EQ(c.flow.boundaries[1].value(10.0), 0.058);
+  EXPECT_NO_THROW(check_case_against_mesh(c, {"inflow", "outflow", "bank_inner", "bank_outer"}));
+  EXPECT_EQ(c.time.end, 120.0);
+  EXPECT_EQ(c.time.mode, CouplingMode::one_way);
+  ASSERT_EQ(c.bodies.bodies.size(), 4u);
+  for (const BodySpec& b : c.bodies.bodies) {
+    EXPECT_EQ(b.length, 0.2);
+    EXPECT_EQ(b.width, 0.02);
+    // Inside the inlet reach x in [0, 3], y in [0.4, 1.2] with the whole log.
+    EXPECT_GT(b.position.x() - 0.1, 0.0);
+    EXPECT_LT(b.position.x() + 0.1, 3.0);
+    EXPECT_GT(b.position.y() - 0.1, 0.4);
+    EXPECT_LT(b.position.y() + 0.1, 1.2);
+  }
+}
+
+TEST(CaseFile, DocumentationExampleParses) {
+  std::ifstream in(std::string(FLOTSAM_SOURCE_DIR) + "/docs/case-format.md");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const auto section = doc.find("## Complete example");
+  ASSERT_NE(section, std::string::npos);
+  const auto begin = doc.find("```yaml\n", section) + 8;
+  const auto end = doc.find("\n```", begin);
+  const Case c = parse_case(doc.substr(begin, end - begin + 1), "case-format.yaml");
+  EXPECT_EQ(c.name, "reach_with_bridge");
+  EXPECT_NEAR(c.flow.viscosity, 1.0 * 10.0 / 1000.0, 1e-15);
+  EXPECT_EQ(c.bed.slope, Vec2(0.0005, 0.0));
+  EXPECT_DOUBLE_EQ(c.flow.boundaries[0].value(300.0), 325.0);  // halfway up the flood wave
+  EXPECT_EQ(c.flow.boundaries[3].kind, BoundaryCondition::Kind::noslip);
+  EXPECT_EQ(c.bodies.bodies.size(), 2u);
+  EXPECT_EQ(c.bodies.releases.size(), 1u);
+  EXPECT_EQ(c.bodies.contact.restitution, 0.3);
+  EXPECT_EQ(c.bodies.contact.restitution_threshold, 0.01);
+  EXPECT_EQ(c.bodies.contact.position_iterations, 10);
+  EXPECT_EQ(c.bodies.contact.allowed_overlap, 0.005);
+  EXPECT_NO_THROW(check_case_against_mesh(
+      c, {"inflow", "outflow", "bank_right", "bank_left", "pier_1", "pier_2"}));
+}
+
+// The examples' boundary names are the generator's, and every body lies wholly in the water.
+void expect_case_fits_its_mesh(const Case& c) {
+  const Mesh mesh = generate_mesh(c.mesh);
+  EXPECT_NO_THROW(check_case_against_mesh(c, mesh.group_names));
+  const PointLocator locator(mesh);
+  for (const BodySpec& b : c.bodies.bodies) {
+    const Vec2 along = 0.5 * b.length * Vec2(std::cos(b.angle), std::sin(b.angle));
+    const Vec2 across = 0.5 * b.width * Vec2(-std::sin(b.angle), std::cos(b.angle));
+    for (const Vec2& corner :
+         {Vec2(b.position + along + across), Vec2(b.position + along - across),
+          Vec2(b.position - along + across), Vec2(b.position - along - across)})
+      EXPECT_TRUE(locator.locate(corner).inside) << "body at " << b.position.transpose();
+  }
+}
+
+TEST(CaseFile, ExamplesFitTheirGeneratedMeshes) {
+  expect_case_fits_its_mesh(read_case(examples + "bridge_piers.yaml"));
+  expect_case_fits_its_mesh(read_case(examples + "bend180.yaml"));
+}
+
+// ---- values and defaults ------------------------------------------------------------------
+
+TEST(CaseFile, DefaultsAreTheSpecs) {
+  const Case c = parse_case(base_case, "cases/river.yaml");
+  EXPECT_EQ(c.file, "cases/river.yaml");
+  EXPECT_EQ(c.name, "river");  // the file's stem
+  EXPECT_EQ(c.mesh.channel.piers.size(), 0u);
+  EXPECT_EQ(c.bed.kind, BedConfig::Kind::flat);
+  EXPECT_EQ(c.flow.gravity, 9.81);
+  EXPECT_EQ(c.flow.water_density, 1000.0);
+  EXPECT_EQ(c.flow.viscosity, 1e-6);
+  EXPECT_EQ(c.flow.turbulence, TurbulenceModel::none);
+  EXPECT_FALSE(c.flow.coriolis);
+  EXPECT_EQ(c.flow.wind, Vec2::Zero());
+  EXPECT_EQ(c.flow.min_depth, 1e-3);
+  EXPECT_EQ(c.time.mode, CouplingMode::two_way);
+  EXPECT_EQ(c.bodies.physics.drag_law, DragLaw::ganser);
+  EXPECT_EQ(c.bodies.physics.added_mass_coefficient, 0.5);
+  EXPECT_EQ(c.bodies.physics.drag_points, 1);
+  EXPECT_EQ(c.bodies.contact.restitution, 1.0);
+  EXPECT_EQ(c.bodies.contact.friction, 0.5);
+  EXPECT_TRUE(c.bodies.bodies.empty());
+  EXPECT_EQ(c.output.directory, "out");
+  EXPECT_EQ(c.output.interval, 60.0);
+  EXPECT_FALSE(c.output.overwrite);
+}
+
+TEST(CaseFile, TablesBecomeTimeSeries) {
+  const Case c =
+      parse_case(edited("value: 1.0}", "value: [[0, 1.0], [60, 1.2], [120, 1.1]]}"), "case.yaml");
+  const TimeSeries& eta = c.flow.boundaries[0].value;
+  EXPECT_DOUBLE_EQ(eta(30.0), 1.1);
+  EXPECT_DOUBLE_EQ(eta(90.0), 1.15);
+  EXPECT_EQ(eta(500.0), 1.1);
+}
+
+TEST(CaseFile, SectionsOfEveryKindAreRead) {
+  const Case c = parse_case(appended(R"(bed: {level: 2, slope: 0.001}
+bodies:
+  physics: {drag_law: constant, drag_coefficient: 1.0, drag_points: 3}
+  list:
+    - {shape: box, length: 4, width: 2, height: 1.5, density: 300, x: 10, y: 5, u: 1, id: 7}
+  release:
+    - {line: [[5, 2], [5, 18]], start: 10, end: 70, rate: 6, length: [10, 20],
+       width: 1, density: [500, 700], angle_deg: [-45, 45], seed: 42}
+output: {directory: results, interval: 5, overwrite: true}
+)"),
+                            "case.yaml");
+  EXPECT_EQ(c.bed.kind, BedConfig::Kind::slope);
+  EXPECT_EQ(c.bed.level, 2.0);
+  EXPECT_EQ(c.bed.slope, Vec2(0.001, 0.0));
+  EXPECT_EQ(c.bodies.physics.drag_law, DragLaw::constant);
+  EXPECT_EQ(c.bodies.physics.drag_coefficient, 1.0);
+  EXPECT_EQ(c.bodies.physics.drag_points, 3);
+  const BodySpec& box = c.bodies.bodies.at(0);
+  EXPECT_EQ(box.shape, Shape::box);
+  EXPECT_EQ(box.height, 1.5);
+  EXPECT_EQ(box.density, 300.0);
+  EXPECT_EQ(box.velocity, Vec2(1.0, 0.0));
+  EXPECT_EQ(box.id, 7);
+  const Release& r = c.bodies.releases.at(0);
+  EXPECT_EQ(r.line_start, Vec2(5.0, 2.0));
+  EXPECT_EQ(r.line_end, Vec2(5.0, 18.0));
+  EXPECT_EQ(r.start_time, 10.0);
+  EXPECT_EQ(r.end_time, 70.0);
+  EXPECT_EQ(r.rate, 6.0);
+  EXPECT_EQ(r.length_min, 10.0);
+  EXPECT_EQ(r.length_max, 20.0);
+  EXPECT_EQ(r.width_min, 1.0);
+  EXPECT_EQ(r.width_max, 1.0);
+  EXPECT_EQ(r.height, 1.0);  // a log's: its width
+  EXPECT_EQ(r.density_min, 500.0);
+  EXPECT_EQ(r.angle_min_deg, -45.0);
+  EXPECT_EQ(r.angle_max_deg, 45.0);
+  EXPECT_EQ(r.seed, 42ul);
+  EXPECT_EQ(c.output.directory, "results");
+  EXPECT_TRUE(c.output.overwrite);
+}
+
+TEST(CaseFile, FlowOptionsAreRead) {
+  const Case c =
+      parse_case(edited("  initial: {eta: 1.0}", R"(  initial: {eta_start: 1.2, eta_end: 1.0}
+  viscosity: 0.01
+  turbulence: {model: smagorinsky, smagorinsky_constant: 0.1}
+  coriolis: {latitude_deg: 45}
+  wind: {velocity: [3, -4]})"),
+                 "case.yaml");
+  EXPECT_EQ(c.flow.initial_eta_start, 1.2);
+  EXPECT_EQ(c.flow.initial_eta_end, 1.0);
+  EXPECT_EQ(c.flow.viscosity, 0.01);
+  EXPECT_EQ(c.flow.turbulence, TurbulenceModel::smagorinsky);
+  EXPECT_EQ(c.flow.smagorinsky_constant, 0.1);
+  EXPECT_TRUE(c.flow.coriolis);
+  EXPECT_EQ(c.flow.latitude_deg, 45.0);
+  EXPECT_EQ(c.flow.wind, Vec2(3.0, -4.0));
+}
+
+TEST(CaseFile, VelocityBoundaryTakesUAndV) {
+  const Case c = parse_case(edited("inflow: {type: elevation, value: 1.0}",
+                                   "inflow: {type: velocity, u: 0.5, v: [[0, 0], [10, 1]]}"),
+                            "case.yaml");
+  EXPECT_EQ(c.flow.boundaries[0].kind, BoundaryCondition::Kind::velocity);
+  EXPECT_EQ(c.flow.boundaries[0].value(3.0), 0.5);
+  EXPECT_DOUBLE_EQ(c.flow.boundaries[0].value_y(5.0), 0.5);
+}
+
+TEST(CaseFile, RelativeMeshFileIsReadFromTheCaseFolder) {
+  const auto folder = std::filesystem::temp_directory_path() / "flotsam_case_file_test";
+  std::filesystem::create_directories(folder / "meshes");
+  std::ofstream(folder / "meshes" / "river.msh") << "$MeshFormat\n";
+  std::ofstream(folder / "river.yaml")
+      << edited("  channel: {length: 100, width: 20}", "  file: meshes/river.msh");
+  const Case c = read_case((folder / "river.yaml").string());
+  EXPECT_EQ(c.mesh.kind, MeshSource::Kind::file);
+  EXPECT_EQ(c.mesh.file, (folder / "meshes" / "river.msh").string());
+  std::filesystem::remove_all(folder);
+}
+
+// ---- errors: each names file, line, key path, and what was expected ------------------------
+
+TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
+  EXPECT_EQ(error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
+            "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
+            "gravity, density, viscosity, reynolds, friction, turbulence, coriolis, wind, "
+            "min_depth, dry_depth, initial, boundaries");
+  EXPECT_EQ(error_of(appended("nmae: river\n")),
+            "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
+            "bed, flow, time, bodies, output");
+  EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, angel_deg: 30}\n")),
+            "case.yaml:14: bodies.list[0].angel_deg: unknown key (did you mean 'angle_deg'?); "
+            "allowed here: shape, length, width, height, density, x, y, angle_deg, u, v, omega, "
+            "id");
+  EXPECT_EQ(error_of(edited("channel:", "chanel:")),
+            "case.yaml:2: mesh.chanel: unknown key (did you mean 'channel'?); allowed here: file, "
+            "channel, bend, polygon");
+}
+
+TEST(CaseFileError, MissingKeyIsNamedWithItsMeaning) {
+  EXPECT_EQ(error_of(edited("time: {end: 10, step: 0.5}", "time: {step: 0.5}")),
+            "case.yaml:11: time.end: missing; this key is required: the simulated time [s]");
+  EXPECT_EQ(error_of(edited("time: {end: 10, step: 0.5}\n", "")),
+            "case.yaml:1: time: missing; this key is required: at least time.end");
+  EXPECT_EQ(error_of(edited("coefficient: 0.03", "coefficent: 0.03")),
+            "case.yaml:4: flow.friction.coefficient: missing; this key is required: Manning's n "
+            "[s m^-1/3] (is 'coefficent' on line 4 a misspelling of it?)");
+  EXPECT_EQ(error_of(edited("  initial: {eta: 1.0}", "  initial: {eta_start: 1.0}")),
+            "case.yaml:5: flow.initial.eta_end: missing; this key is required: eta at the "
+            "largest x [m]");
+}
+
+TEST(CaseFileError, WrongTypeSaysWhatWasExpectedAndFound) {
+  EXPECT_EQ(error_of(edited("length: 100", "length: abc")),
+            "case.yaml:2: mesh.channel.length: expected a number > 0, got 'abc'");
+  EXPECT_EQ(error_of(edited("length: 100", "length: \"100\"")),
+            "case.yaml:2: mesh.channel.length: expected a number > 0, got the quoted text '100'");
+  EXPECT_EQ(
+      error_of(edited("friction: {law: manning, coefficient: 0.03}", "friction: [manning, 0.03]")),
+      "case.yaml:4: flow.friction: expected a map of keys, got a list");
+  EXPECT_EQ(error_of(edited("outflow: {type: elevation, value: 0.9}",
+                            "outflow: {type: elevation, value: {t: 0}}")),
+            "case.yaml:8: flow.boundaries.outflow.value: expected a number or a table [[t, "
+            "value], ...], got a map");
+  EXPECT_EQ(error_of(appended("output: {overwrite: maybe}\n")),
+            "case.yaml:12: output.overwrite: expected true or false, got 'maybe'");
+  EXPECT_EQ(error_of(appended("bodies: {physics: {drag_points: 2.5}}\n")),
+            "case.yaml:12: bodies.physics.drag_points: expected an integer in [1, 1000], got "
+            "'2.5'");
+}
+
+TEST(CaseFileError, OutOfRangeGivesTheRange) {
+  EXPECT_EQ(error_of(edited("length: 100", "length: -5")),
+            "case.yaml:2: mesh.channel.length: expected a number > 0, got -5");
+  EXPECT_EQ(error_of(edited("end: 10", "end: 0")),
+            "case.yaml:11: time.end: expected a number > 0, got 0");
+  EXPECT_EQ(error_of(edited("step: 0.5", "step: -0.1")),
+            "case.yaml:11: time.step: expected a number > 0, got -0.1");
+  EXPECT_EQ(error_of(edited("step: 0.5", "step: 20")),
+            "case.yaml:11: time.step: the step 20 s is longer than time.end = 10 s");
+  EXPECT_EQ(error_of(appended("bodies: {contact: {restitution: 1.5}}\n")),
+            "case.yaml:12: bodies.contact.restitution: expected a number in [0, 1], got 1.5");
+  EXPECT_EQ(error_of(edited("  initial:", "  density: -1000\n  initial:")),
+            "case.yaml:5: flow.density: expected a number > 0, got -1000");
+  EXPECT_EQ(error_of(edited("  initial:", "  min_depth: 0\n  initial:")),
+            "case.yaml:5: flow.min_depth: expected a number > 0, got 0");
+  EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, density: -600}\n")),
+            "case.yaml:14: bodies.list[0].density: expected a number > 0, got -600");
+  EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, length: 0.5}\n")),
+            "case.yaml:14: bodies.list[0].length: the width 1 m exceeds the length 0.5 m; length "
+            "is the long side");
+  EXPECT_EQ(error_of(edited("  initial:", "  coriolis: {latitude_deg: 95}\n  initial:")),
+            "case.yaml:5: flow.coriolis.latitude_deg: expected a number in [-90, 90], got 95");
+}
+
+TEST(CaseFileError, UnknownWordListsTheAllowedOnes) {
+  EXPECT_EQ(error_of(edited("law: manning", "law: manningg")),
+            "case.yaml:4: flow.friction.law: unknown value 'manningg'; expected one of: none, "
+            "manning, chezy, strickler (did you mean 'manning'?)");
+  EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, mode: twoway}")),
+            "case.yaml:11: time.mode: unknown value 'twoway'; expected one of: frozen, one-way, "
+            "two-way (did you mean 'two-way'?)");
+  EXPECT_EQ(error_of(edited("bank_left: {type: wall}", "bank_left: {type: slip}")),
+            "case.yaml:10: flow.boundaries.bank_left.type: unknown value 'slip'; expected one "
+            "of: elevation, discharge, velocity, wall, noslip");
+}
+
+TEST(CaseFileError, NameMustSuitAFolder) {
+  EXPECT_EQ(error_of(appended("name: my river\n")),
+            "case.yaml:12: name: expected a name of letters, digits, '_', '-' and '.' (it names "
+            "the output folder), got 'my river'");
+}
+
+TEST(CaseFileError, TableRowsMustBeStrictlyIncreasing) {
+  EXPECT_EQ(error_of(edited("value: 1.0}", "value: [[0, 1.0], [60, 1.2], [60, 1.3]]}")),
+            "case.yaml:7: flow.boundaries.inflow.value[2]: t = 60 does not come after the "
+            "previous row's t = 60; a table's t must be strictly increasing");
+  EXPECT_EQ(error_of(edited("value: 1.0}", "value: [[0, 1.0, 2.0]]}")),
+            "case.yaml:7: flow.boundaries.inflow.value[0]: expected a table row [t, value], got "
+            "a list of 3");
+  EXPECT_EQ(error_of(appended("bed:\n  profile_x:\n    - [0, 1]\n    - [-10, 0]\n")),
+            "case.yaml:15: bed.profile_x[1]: x = -10 does not come after the previous row's x = "
+            "0; a table's x must be strictly increasing");
+}
+
+TEST(CaseFileError, YamlSyntaxErrorNamesTheLine) {
+  EXPECT_EQ(error_of(edited("  initial: {eta: 1.0}", "  initial: eta: 1.0")),
+            "case.yaml:5: YAML syntax error: illegal map value");
+  EXPECT_EQ(error_of(""),
+            "case.yaml:1: the file is empty; expected a map of sections (mesh, flow, time, ...)");
+}
+
+TEST(CaseFileError, MissingCaseFileIsNamed) {
+  try {
+    read_case("/no/such/folder/case.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "cannot open the case file '/no/such/folder/case.yaml': no such file");
+  }
+}
+
+TEST(CaseFileError, KeyGivenTwiceIsAnError) {
+  EXPECT_EQ(error_of(edited("  initial:", "  friction: {law: none}\n  initial:")),
+            "case.yaml:5: flow.friction: given twice (first on line 4)");
+}
+
+TEST(CaseFileError, KeysThatDoNotApplyAreRejectedWithTheReason) {
+  EXPECT_EQ(error_of(edited("bank_left: {type: wall}", "bank_left: {type: wall, value: 1}")),
+            "case.yaml:10: flow.boundaries.bank_left.value: not allowed here: a wall takes no "
+            "value");
+  EXPECT_EQ(error_of(edited("{law: manning, coefficient: 0.03}", "{law: none, coefficient: 0.03}")),
+            "case.yaml:4: flow.friction.coefficient: not allowed here: not used with law 'none'");
+  EXPECT_EQ(error_of(edited("  initial:",
+                            "  viscosity: 1e-6\n  reynolds: {number: 1000}\n  "
+                            "initial:")),
+            "case.yaml:6: flow.reynolds: give either 'viscosity' (line 5) or 'reynolds', not "
+            "both");
+  EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, height: 2}\n")),
+            "case.yaml:14: bodies.list[0].height: not allowed here: a log's height is its width "
+            "(its diameter)");
+  EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, id: 3}\n    - {x: 5, y: 2, "
+                              "id: 3}\n")),
+            "case.yaml:15: bodies.list[1].id: id 3 is already used by the body on line 14");
+}
+
+TEST(CaseFileError, MeshMistakesAreNamed) {
+  EXPECT_EQ(error_of(edited("  channel: {length: 100, width: 20}",
+                            "  channel: {length: 100, width: 20}\n  bend: {}")),
+            "case.yaml:3: mesh.bend: give either 'channel' (line 2) or 'bend', not both");
+  EXPECT_EQ(error_of(edited("width: 20}", "width: 20, piers: [{x: 5, y: 10, radius: 6}]}")),
+            "case.yaml:2: mesh.channel.piers[0]: a pier at (5, 10) of radius 6 m does not fit "
+            "inside the channel [0, 100] x [0, 20] m; it must clear every bank");
+  EXPECT_EQ(error_of(edited("width: 20}",
+                            "width: 20,\n    piers: [{x: 50, y: 10, radius: 3},\n            "
+                            "{x: 54, y: 10, radius: 2}]}")),
+            "case.yaml:4: mesh.channel.piers[1]: overlaps pier 1 (line 3)");
+  EXPECT_EQ(error_of(edited("  channel: {length: 100, width: 20}", "  file: nothere.msh")),
+            "case.yaml:2: mesh.file: no such mesh file 'nothere.msh' (a relative path is read "
+            "from the case file's folder)");
+  EXPECT_EQ(error_of(edited("  channel: {length: 100, width: 20}",
+                            "  polygon: {points: [[0, 0], [1, 0], [1, 1]], groups: [a, b]}")),
+            "case.yaml:2: mesh.polygon.groups: expected one group per side, 3 (side i joins "
+            "corner i to corner i+1), got 2");
+}
+
+// ---- the case against its mesh ------------------------------------------------------------
+
+TEST(CaseAgainstMesh, ConditionOnAGroupTheMeshLacksIsNamed) {
+  const Case c = parse_case(base_case, "case.yaml");
+  try {
+    check_case_against_mesh(c, {"inflow", "outflow", "bank_right"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "case.yaml:10: flow.boundaries.bank_left: the mesh has no boundary group "
+                 "'bank_left'; its groups are: inflow, outflow, bank_right");
+  }
+}
+
+TEST(CaseAgainstMesh, MeshGroupWithoutConditionIsNamed) {
+  const Case c = parse_case(base_case, "case.yaml");
+  try {
+    check_case_against_mesh(c, {"inflow", "outflow", "bank_right", "bank_left", "pier_1"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "case.yaml: flow.boundaries: the mesh's boundary group 'pier_1' has no "
+                 "condition; every group needs one (a bank or a pier: 'pier_1: {type: wall}'); "
+                 "the mesh's groups are: inflow, outflow, bank_right, bank_left, pier_1");
+  }
+}
+
+}  // namespace
+}  // namespace flotsam
