@@ -1,0 +1,342 @@
+// Geometry -> Gmsh built-in (geo) model -> order-2 mesh -> RawMesh.
+//
+// Every generator:
+//   1. validates the geometry (InputError naming the pier, point or side);
+//   2. builds the boundary counter-clockwise from points, lines and circle arcs (each arc at
+//      most a quarter circle), one plane surface, one physical group per boundary name and the
+//      surface group "water" (so that a written .msh holds the triangles);
+//   3. sets the size: Mesh.MeshSizeMax everywhere, and for the channel a Threshold field of the
+//      Distance to the piers, growing from pier_mesh_size on the circles to mesh_size at
+//      refine_distance;
+//   4. meshes in 2D (Frontal-Delaunay), raises to order 2 (mid nodes on the curves), writes the
+//      .msh if asked, and hands the model to raw_mesh_from_gmsh_model.
+#include "mesh/mesh_generator.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+#include "mesh/gmsh_session.hpp"
+#include "mesh/msh_reader.hpp"
+
+namespace flotsam {
+namespace {
+
+namespace geo = gmsh::model::geo;
+
+constexpr int frontal_delaunay = 6;    // Gmsh Mesh.Algorithm
+constexpr int distance_samples = 200;  // [-] points per pier arc for the Distance field
+
+int add_point(const Vec2& p) {
+  return geo::addPoint(p.x(), p.y(), 0.0);
+}
+
+/// Boundary curves by group name, in the order the names first appear.
+class BoundaryGroups {
+ public:
+  void add(const std::string& name, int curve) {
+    auto found = std::find_if(groups_.begin(), groups_.end(),
+                              [&](const auto& group) { return group.first == name; });
+    if (found == groups_.end()) {
+      groups_.push_back({name, {}});
+      found = groups_.end() - 1;
+    }
+    found->second.push_back(curve);
+  }
+  /// Physical groups for the curves and the surface; after geo::synchronize.
+  void create(int surface) const {
+    for (const auto& [name, curves] : groups_)
+      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, curves), name);
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "water");
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::vector<int>>> groups_;
+};
+
+/// A circle arc of at most a quarter turn between two points on a circle around `centre`.
+int add_arc(int from, int centre, int to) {
+  return geo::addCircleArc(from, centre, to);
+}
+
+void set_common_options(double mesh_size) {
+  gmsh::option::setNumber("Mesh.Algorithm", frontal_delaunay);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);  // mid nodes on the curves
+  gmsh::option::setNumber("Mesh.HighOrderOptimize", 0);
+}
+
+void write_current_model(const std::string& msh_path, const MshFormat& format) {
+  if (format.version != 2.2 && format.version != 4.1)
+    throw_input_error("{}: MSH format version {} is not supported; expected 2.2 or 4.1", msh_path,
+                      format.version);
+  try {
+    gmsh::option::setNumber("Mesh.MshFileVersion", format.version);
+    gmsh::option::setNumber("Mesh.Binary", format.binary ? 1 : 0);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);  // only elements in physical groups
+    gmsh::write(msh_path);
+  } catch (...) {
+    throw_input_error("{}: Gmsh cannot write the mesh: {}", msh_path, current_gmsh_error());
+  }
+  if (!std::ifstream(msh_path).good())
+    throw_input_error("{}: the mesh file could not be written (does its folder exist?)", msh_path);
+}
+
+/// Steps 2-4 after the boundary is built: surface, groups, mesh, write, extract.
+RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
+                           const BoundaryGroups& groups, const std::string& msh_path,
+                           const MshFormat& format) {
+  try {
+    const int surface = geo::addPlaneSurface(loops);
+    geo::synchronize();
+    groups.create(surface);
+    gmsh::model::mesh::generate(2);
+    gmsh::model::mesh::setOrder(2);
+  } catch (...) {
+    throw_input_error("{}: Gmsh cannot mesh the geometry: {}", source, current_gmsh_error());
+  }
+  if (!msh_path.empty()) write_current_model(msh_path, format);
+  return raw_mesh_from_gmsh_model(source);
+}
+
+void require_positive(const std::string& source, const char* key, double value) {
+  if (!(value > 0)) throw_input_error("{}: {} must be positive; got {}", source, key, value);
+}
+
+// ---- channel with piers ----------------------------------------------------------------------
+
+void check_channel(const ChannelGeometry& channel, const std::string& source) {
+  require_positive(source, "length", channel.length);
+  require_positive(source, "width", channel.width);
+  require_positive(source, "mesh_size", channel.mesh_size);
+  require_positive(source, "pier_mesh_size", channel.pier_mesh_size);
+  if (!(channel.refine_distance >= 0))
+    throw_input_error("{}: refine_distance must not be negative; got {}", source,
+                      channel.refine_distance);
+  const auto& piers = channel.piers;
+  for (std::size_t i = 0; i < piers.size(); ++i) {
+    const Pier& p = piers[i];
+    const double x = p.centre.x(), y = p.centre.y(), r = p.radius;
+    const auto name = fmt::format("pier_{} (centre ({}, {}) m, radius {} m)", i + 1, x, y, r);
+    if (!(r > 0)) throw_input_error("{}: {} needs a positive radius", source, name);
+    if (y - r <= 0) throw_input_error("{}: {} reaches the right bank (y = 0)", source, name);
+    if (y + r >= channel.width)
+      throw_input_error("{}: {} reaches the left bank (y = {} m)", source, name, channel.width);
+    if (x - r <= 0) throw_input_error("{}: {} reaches the inflow (x = 0)", source, name);
+    if (x + r >= channel.length)
+      throw_input_error("{}: {} reaches the outflow (x = {} m)", source, name, channel.length);
+    for (std::size_t j = 0; j < i; ++j) {
+      const double gap = (p.centre - piers[j].centre).norm() - r - piers[j].radius;  // [m]
+      if (gap <= 0)
+        throw_input_error(
+            "{}: pier_{} and pier_{} overlap (their centres are {:.6g} m apart, their radii add "
+            "up to {:.6g} m)",
+            source, j + 1, i + 1, (p.centre - piers[j].centre).norm(), r + piers[j].radius);
+    }
+  }
+}
+
+/// A full circle as four quarter arcs, counter-clockwise from angle 0.
+std::vector<int> add_circle(const Vec2& centre, double radius) {
+  const int c = add_point(centre);
+  std::vector<int> points;
+  for (const Vec2& direction : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
+    points.push_back(add_point(centre + radius * direction));
+  std::vector<int> arcs;
+  for (int k = 0; k < 4; ++k) arcs.push_back(add_arc(points[k], c, points[(k + 1) % 4]));
+  return arcs;
+}
+
+void add_pier_size_field(const ChannelGeometry& channel, const std::vector<int>& pier_curves) {
+  namespace field = gmsh::model::mesh::field;
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", {pier_curves.begin(), pier_curves.end()});
+  field::setNumber(distance, "NNodesByEdge", distance_samples);
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "LcMin", channel.pier_mesh_size);
+  field::setNumber(threshold, "LcMax", channel.mesh_size);
+  field::setNumber(threshold, "DistMin", 0.0);
+  field::setNumber(threshold, "DistMax", channel.refine_distance);
+  field::setAsBackgroundMesh(threshold);
+}
+
+// ---- polygon -----------------------------------------------------------------------------------
+
+/// Orientation of c with respect to the line a -> b: > 0 left, < 0 right, 0 on it.
+double orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return cross(b - a, c - a);
+}
+
+bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
+  return orientation(a, b, p) == 0 && (p - a).dot(p - b) <= 0;
+}
+
+/// Closed segments a-b and c-d share a point.
+bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+  const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+    return true;
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+}
+
+void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
+  const auto& p = polygon.points;
+  const std::size_t n = p.size();
+  if (n < 3) throw_input_error("{}: a polygon needs at least 3 points; got {}", source, n);
+  if (polygon.groups.size() != n)
+    throw_input_error("{}: {} points make {} sides, but {} group names are given (one per side)",
+                      source, n, n, polygon.groups.size());
+  require_positive(source, "mesh_size", polygon.mesh_size);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (polygon.groups[i].empty())
+      throw_input_error("{}: side {} (points {} to {}) has an empty group name", source, i + 1,
+                        i + 1, (i + 1) % n + 1);
+    for (std::size_t j = 0; j < i; ++j)
+      if (p[i] == p[j])
+        throw_input_error("{}: points {} and {} coincide at ({}, {}) m", source, j + 1, i + 1,
+                          p[i].x(), p[i].y());
+  }
+  // Sides i (p[i] -> p[i+1]) and j: neighbours share one end and must not fold back onto each
+  // other; other sides must not meet at all.
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Vec2 &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+      bool meet = false;
+      if (j == i + 1)
+        meet = on_segment(a, b, d) || on_segment(c, d, a);
+      else if (i == 0 && j == n - 1)
+        meet = on_segment(c, d, b) || on_segment(a, b, c);
+      else
+        meet = segments_meet(a, b, c, d);
+      if (meet)
+        throw_input_error(
+            "{}: the polygon intersects itself: side {} (points {} to {}) meets side {} (points "
+            "{} to {})",
+            source, i + 1, i + 1, (i + 1) % n + 1, j + 1, j + 1, (j + 1) % n + 1);
+    }
+}
+
+}  // namespace
+
+RawMesh generate_channel_mesh(const ChannelGeometry& channel, const std::string& msh_path,
+                              const MshFormat& format) {
+  const std::string source = "generated channel";
+  check_channel(channel, source);
+  const double L = channel.length, W = channel.width;  // [m]
+  GmshSession session;
+  set_common_options(channel.mesh_size);
+  BoundaryGroups groups;
+  const int p00 = add_point({0, 0}), p10 = add_point({L, 0});
+  const int p11 = add_point({L, W}), p01 = add_point({0, W});
+  const int right = geo::addLine(p00, p10), outflow = geo::addLine(p10, p11);
+  const int left = geo::addLine(p11, p01), inflow = geo::addLine(p01, p00);
+  groups.add("inflow", inflow);
+  groups.add("outflow", outflow);
+  groups.add("bank_right", right);
+  groups.add("bank_left", left);
+  std::vector<int> loops = {geo::addCurveLoop({right, outflow, left, inflow})};
+  std::vector<int> pier_curves;
+  for (std::size_t i = 0; i < channel.piers.size(); ++i) {
+    const auto arcs = add_circle(channel.piers[i].centre, channel.piers[i].radius);
+    for (int arc : arcs) groups.add(fmt::format("pier_{}", i + 1), arc);
+    pier_curves.insert(pier_curves.end(), arcs.begin(), arcs.end());
+    loops.push_back(geo::addCurveLoop(arcs));
+  }
+  if (!pier_curves.empty()) {
+    geo::synchronize();
+    add_pier_size_field(channel, pier_curves);
+  }
+  return mesh_current_model(source, loops, groups, msh_path, format);
+}
+
+RawMesh generate_bend_mesh(const BendGeometry& bend, const std::string& msh_path,
+                           const MshFormat& format) {
+  const std::string source = "generated bend";
+  require_positive(source, "width", bend.width);
+  require_positive(source, "inner_radius", bend.inner_radius);
+  require_positive(source, "inlet_length", bend.inlet_length);
+  require_positive(source, "outlet_length", bend.outlet_length);
+  require_positive(source, "mesh_size", bend.mesh_size);
+  const Vec2 c = bend.centre;
+  const double R_i = bend.inner_radius, R_o = bend.inner_radius + bend.width;  // [m]
+  const double L_in = bend.inlet_length, L_out = bend.outlet_length;           // [m]
+  GmshSession session;
+  set_common_options(bend.mesh_size);
+  // Counter-clockwise: A -> H along the outer bank of the inlet reach, the outer half circle
+  // H -> G, the outlet reach's outer bank G -> F, the outflow F -> E, back along the inner bank
+  // E -> D, the inner half circle D -> C, C -> B, and the inflow B -> A.
+  const int centre = add_point(c);
+  const int A = add_point(c + Vec2(L_in, R_o)), H = add_point(c + Vec2(0, R_o));
+  const int outer_mid = add_point(c + Vec2(-R_o, 0)), G = add_point(c + Vec2(0, -R_o));
+  const int F = add_point(c + Vec2(L_out, -R_o)), E = add_point(c + Vec2(L_out, -R_i));
+  const int D = add_point(c + Vec2(0, -R_i)), inner_mid = add_point(c + Vec2(-R_i, 0));
+  const int C = add_point(c + Vec2(0, R_i)), B = add_point(c + Vec2(L_in, R_i));
+  const int outer_in = geo::addLine(A, H), outer_arc_1 = add_arc(H, centre, outer_mid);
+  const int outer_arc_2 = add_arc(outer_mid, centre, G), outer_out = geo::addLine(G, F);
+  const int outflow = geo::addLine(F, E);
+  const int inner_out = geo::addLine(E, D), inner_arc_1 = add_arc(D, centre, inner_mid);
+  const int inner_arc_2 = add_arc(inner_mid, centre, C), inner_in = geo::addLine(C, B);
+  const int inflow = geo::addLine(B, A);
+  BoundaryGroups groups;
+  groups.add("inflow", inflow);
+  groups.add("outflow", outflow);
+  for (int curve : {inner_out, inner_arc_1, inner_arc_2, inner_in}) groups.add("bank_inner", curve);
+  for (int curve : {outer_in, outer_arc_1, outer_arc_2, outer_out}) groups.add("bank_outer", curve);
+  const std::vector<int> loop = {outer_in,  outer_arc_1, outer_arc_2, outer_out, outflow,
+                                 inner_out, inner_arc_1, inner_arc_2, inner_in,  inflow};
+  return mesh_current_model(source, {geo::addCurveLoop(loop)}, groups, msh_path, format);
+}
+
+RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string& msh_path,
+                              const MshFormat& format) {
+  const std::string source = "generated polygon";
+  check_polygon(polygon, source);
+  GmshSession session;
+  set_common_options(polygon.mesh_size);
+  std::vector<int> points, sides;
+  for (const Vec2& p : polygon.points) points.push_back(add_point(p));
+  BoundaryGroups groups;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    sides.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
+    groups.add(polygon.groups[i], sides.back());
+  }
+  return mesh_current_model(source, {geo::addCurveLoop(sides)}, groups, msh_path, format);
+}
+
+Mesh generate_mesh(const MeshSource& source, const std::string& msh_path, const MshFormat& format) {
+  switch (source.kind) {
+    case MeshSource::Kind::file: {
+      Mesh mesh = read_msh(source.file);
+      if (!msh_path.empty()) {  // a copy in the asked format
+        GmshSession session;
+        try {
+          gmsh::open(source.file);
+        } catch (...) {
+          throw_input_error("{}: Gmsh cannot read the mesh file: {}", source.file,
+                            current_gmsh_error());
+        }
+        write_current_model(msh_path, format);
+      }
+      return mesh;
+    }
+    case MeshSource::Kind::channel:
+      return build_mesh(generate_channel_mesh(source.channel, msh_path, format));
+    case MeshSource::Kind::bend:
+      return build_mesh(generate_bend_mesh(source.bend, msh_path, format));
+    case MeshSource::Kind::polygon:
+      return build_mesh(generate_polygon_mesh(source.polygon, msh_path, format));
+  }
+  throw_input_error("mesh source: unknown kind {}", static_cast<int>(source.kind));
+}
+
+}  // namespace flotsam
