@@ -46,8 +46,10 @@ test-sanitize: deps
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
+# The demo's own files in out/ are replaced on every run (--overwrite); nothing else there is touched.
 demo: build
-	$(BUILD)/flotsam demo examples/bridge_piers.yaml --output out --overwrite
+	$(BUILD)/flotsam mesh examples/bridge_piers.yaml -o out/bridge_piers.msh \
+	    --vtu out/bridge_piers_mesh.vtu --overwrite
 
 bench: build
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks

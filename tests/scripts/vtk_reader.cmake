@@ -2,7 +2,7 @@
 #   io.vtk_write_samples   writes .vtu/.vtp/.pvd samples into the build tree (fixture setup),
 #   io.vtk_read_samples    checks them with tests/scripts/check_vtk.py.
 # Debian's VTK Python module is found by the system interpreter, not by a pyenv python3.
-find_program(FLOTSAM_VTK_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
+find_program(FLOTSAM_VTK_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
 
 add_executable(write_vtk_samples ${CMAKE_CURRENT_LIST_DIR}/write_vtk_samples.cpp)
 target_link_libraries(write_vtk_samples PRIVATE flotsam_options flotsam_io flotsam_bodies)
@@ -10,11 +10,6 @@ target_link_libraries(write_vtk_samples PRIVATE flotsam_options flotsam_io flots
 set(vtk_samples ${CMAKE_CURRENT_BINARY_DIR}/vtk_samples)
 add_test(NAME io.vtk_write_samples COMMAND write_vtk_samples ${vtk_samples})
 set_tests_properties(io.vtk_write_samples PROPERTIES FIXTURES_SETUP vtk_samples LABELS "unit;io")
-if(FLOTSAM_VTK_PYTHON)
-  add_test(NAME io.vtk_read_samples
-           COMMAND ${FLOTSAM_VTK_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/check_vtk.py ${vtk_samples})
-  set_tests_properties(io.vtk_read_samples PROPERTIES FIXTURES_REQUIRED vtk_samples
-                       LABELS "unit;io")
-else()
-  message(WARNING "/usr/bin/python3 not found: io.vtk_read_samples (VTK's reader) is not run")
-endif()
+add_test(NAME io.vtk_read_samples
+         COMMAND ${FLOTSAM_VTK_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/check_vtk.py ${vtk_samples})
+set_tests_properties(io.vtk_read_samples PROPERTIES FIXTURES_REQUIRED vtk_samples LABELS "unit;io")

@@ -1,0 +1,24 @@
+#pragma once
+// The subcommands of `flotsam`. Each registers itself on the app with its options and a callback
+// that CLI11 runs once the command line is parsed.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace flotsam {
+struct Mesh;
+}
+
+namespace flotsam::cli {
+
+void add_mesh_command(CLI::App& app);
+void add_info_command(CLI::App& app);
+
+/// The mesh that `path` gives: a Gmsh .msh file is read; a case file (.yaml/.yml) has its mesh
+/// read or generated.
+Mesh load_mesh_from(const std::string& path);
+
+/// Refuses to replace an existing file unless `overwrite` (nothing the user wrote is lost
+/// without asking).
+void check_can_write(const std::string& path, bool overwrite);
+
+}  // namespace flotsam::cli

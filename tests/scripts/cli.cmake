@@ -1,0 +1,25 @@
+# Tests of the flotsam command line: exit codes and messages (label cli).
+set(cli_work ${CMAKE_CURRENT_BINARY_DIR}/cli_work)
+file(MAKE_DIRECTORY ${cli_work})
+
+function(flotsam_cli_test name exit regex)
+  add_test(NAME cli.${name}
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:flotsam>;${ARGN}"
+                   -DEXPECT_EXIT=${exit} "-DEXPECT_REGEX=${regex}" -DWORKDIR=${cli_work}
+                   -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
+  set_tests_properties(cli.${name} PROPERTIES LABELS "cli")
+endfunction()
+
+set(examples ${PROJECT_SOURCE_DIR}/examples)
+flotsam_cli_test(version 0 "flotsam ${PROJECT_VERSION}" --version)
+flotsam_cli_test(help_lists_commands 0 "mesh.*info" --help)
+flotsam_cli_test(no_command_is_an_error nonzero "A subcommand is required")
+flotsam_cli_test(info_missing_file nonzero "no_such.msh" info no_such.msh)
+flotsam_cli_test(mesh_paper_channel 0 "wrote bridge.msh"
+                 mesh ${examples}/bridge_piers.yaml -o bridge.msh --vtu bridge.vtu --overwrite)
+flotsam_cli_test(info_paper_channel 0 "pier_1" info bridge.msh)
+set_tests_properties(cli.mesh_paper_channel PROPERTIES FIXTURES_SETUP cli_mesh)
+set_tests_properties(cli.info_paper_channel PROPERTIES FIXTURES_REQUIRED cli_mesh)
+flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --overwrite"
+                 mesh ${examples}/bridge_piers.yaml -o bridge.msh)
+set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)
