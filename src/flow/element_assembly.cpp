@@ -1,0 +1,145 @@
+#include "flow/element_assembly.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flotsam {
+
+namespace {
+
+// Stabilisation parameter of SUPG (Tezduyar 1992) for the P2 element, whose node spacing is
+// h = h_e / 2:  tau = ( (2/dt)^2 + (2|a|/h)^2 + (4 nu/h^2)^2 + gamma^2 )^(-1/2).
+double supg_tau(double inv_dt, double speed, double nu, double gamma, double h) {
+  const double a = 2.0 * inv_dt, b = 2.0 * speed / h, c = 4.0 * nu / (h * h);
+  const double sum = a * a + b * b + c * c + gamma * gamma;
+  return sum > 0.0 ? 1.0 / std::sqrt(sum) : 0.0;
+}
+
+}  // namespace
+
+void assemble_element(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
+                      LocalMatrix& K, LocalVector& F) {
+  K.setZero();
+  F.setZero();
+  const double th = p.theta, g = p.gravity, f = p.coriolis, nu = s.nu_e;
+  const double h = 0.5 * ev.size;
+  for (int q = 0; q < triangle_point_count; ++q) {
+    const auto& N = ev.N2[q];
+    const auto& dN = ev.dN2[q];
+    const auto& M = ev.N1[q];
+    const auto& dM = ev.dN1[q];
+    const double JxW = ev.JxW[q];
+
+    // The two states at the quadrature point. G(i, j) = d u_i / d x_j.
+    Vec2 u_k = Vec2::Zero(), u_n = Vec2::Zero(), force = s.element_force, visc_n = Vec2::Zero();
+    Mat2 G_k = Mat2::Zero(), G_n = Mat2::Zero();
+    double z_b = 0.0;
+    for (int b = 0; b < 6; ++b) {
+      const Vec2 ub_k(s.u_k[b], s.v_k[b]), ub_n(s.u_n[b], s.v_n[b]);
+      u_k += N[b] * ub_k;
+      u_n += N[b] * ub_n;
+      G_k += ub_k * dN[b].transpose();
+      G_n += ub_n * dN[b].transpose();
+      z_b += N[b] * s.z_b[b];
+      force += N[b] * s.node_force[b];
+      // Strong viscous term div(nu (grad u + grad u^T)) = nu (Laplace u + grad div u).
+      visc_n += ev.hessian2[b].trace() * ub_n + ev.hessian2[b] * ub_n;
+    }
+    double eta_k = 0.0, eta_n = 0.0;
+    Vec2 grad_eta_n = Vec2::Zero();
+    for (int j = 0; j < 3; ++j) {
+      eta_k += M[j] * s.eta_k[j];
+      eta_n += M[j] * s.eta_n[j];
+      grad_eta_n += s.eta_n[j] * dM[j];
+    }
+    const double H_k = eta_k - z_b, H_n = eta_n - z_b;
+    const double H_f = std::max(H_k, p.friction.min_depth);
+    const double speed = u_k.norm();
+    const double gamma = p.friction.rate(speed, H_k);  // (M-2) friction, F = - gamma u
+    const Vec2 u_hat = speed > 0.0 ? Vec2(u_k / speed) : Vec2::Zero();
+    force += p.wind_stress / H_f;  // (M-2) wind
+    double S = 0.0;
+    if (p.source) {
+      const SourceTerms src = (*p.source)(ev.x[q], p.source_time);
+      force += src.momentum;
+      S = src.continuity;
+    }
+    const double tau = p.supg ? supg_tau(p.inv_dt, speed, nu, gamma, h) : 0.0;
+    const Vec2 advection_k = G_k * u_k, advection_n = G_n * u_n;
+    const Mat2 strain_n = G_n + G_n.transpose();
+    const Vec2 coriolis_n(-u_n.y(), u_n.x());  // k x u^n
+
+    // Momentum rows: test function s_a = N_a + psi_a (SUPG), component c.
+    for (int a = 0; a < 6; ++a) {
+      const double psi = tau * u_k.dot(dN[a]);
+      const double s_a = N[a] + psi;
+      for (int c = 0; c < 2; ++c) {
+        const int row = local_velocity(a, c);
+        for (int b = 0; b < 6; ++b) {
+          const double transport = s_a * (N[b] * p.inv_dt + th * u_k.dot(dN[b]));  // (1), (2)
+          const double grad_ab = dN[a].dot(dN[b]);
+          const double lap_b = ev.hessian2[b].trace();
+          for (int d = 0; d < 2; ++d) {
+            const double delta = c == d ? 1.0 : 0.0;
+            double k = delta * (transport + s_a * gamma * N[b]);          // (1) (2) (5)
+            k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];                // (5)
+            k += th * N[a] * N[b] * G_k(c, d);                            // (2)
+            k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);       // (4)
+            k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
+            k += th * f * s_a * N[b] *
+                 (c == 0 && d == 1   ? -1.0
+                  : c == 1 && d == 0 ? 1.0
+                                     : 0.0);  // (6)
+            K(row, local_velocity(b, d)) += k * JxW;
+          }
+        }
+        for (int j = 0; j < 3; ++j)
+          K(row, local_elevation(j)) += th * g * s_a * dM[j][c] * JxW;        // (3)
+        double rhs = s_a * u_n[c] * p.inv_dt;                                 // (1)
+        rhs += th * N[a] * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
+        rhs -= (1 - th) * g * s_a * grad_eta_n[c];                            // (3)
+        rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                    // (4)
+        rhs += (1 - th) * psi * nu * visc_n[c];                               // (4)
+        rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);                       // (5)
+        rhs -= (1 - th) * f * s_a * coriolis_n[c];                            // (6)
+        rhs += s_a * force[c];                                                // (7)
+        F(row) += rhs * JxW;
+      }
+    }
+
+    // Continuity rows: test function q_i = M_i.
+    const Vec2 flux_n = H_n * u_n;
+    for (int i = 0; i < 3; ++i) {
+      const int row = local_elevation(i);
+      const double advect_i = dM[i].dot(u_k);
+      for (int j = 0; j < 3; ++j)
+        K(row, local_elevation(j)) +=
+            (M[i] * M[j] * p.inv_dt - th * advect_i * M[j]) * JxW;  // (8) (9)
+      for (int b = 0; b < 6; ++b)
+        for (int d = 0; d < 2; ++d)
+          K(row, local_velocity(b, d)) -= th * dM[i][d] * H_k * N[b] * JxW;  // (9)
+      double rhs = M[i] * eta_n * p.inv_dt;                                  // (8)
+      rhs += -th * advect_i * eta_k + (1 - th) * dM[i].dot(flux_n);          // (9)
+      rhs += M[i] * S;                                                       // (11)
+      F(row) += rhs * JxW;
+    }
+  }
+}
+
+std::array<double, 2> open_boundary_flux(double theta, const EdgeValues& ev, const EdgeState& s) {
+  std::array<double, 2> flux = {0.0, 0.0};
+  for (int q = 0; q < edge_point_count; ++q) {
+    const auto& N = ev.N2[q];
+    const auto& M = ev.N1[q];
+    const double z_b = N[0] * s.z_b[0] + N[1] * s.z_b[1] + N[2] * s.z_b[2];
+    const double H_k = M[0] * s.eta_k[0] + M[1] * s.eta_k[1] - z_b;
+    const double H_n = M[0] * s.eta_n[0] + M[1] * s.eta_n[1] - z_b;
+    const Vec2 u_new = N[0] * s.u_new[0] + N[1] * s.u_new[1] + N[2] * s.u_new[2];
+    const Vec2 u_n = N[0] * s.u_n[0] + N[1] * s.u_n[1] + N[2] * s.u_n[2];
+    const double qn = (theta * H_k * u_new + (1 - theta) * H_n * u_n).dot(ev.normal[q]);  // (10)
+    for (int i = 0; i < 2; ++i) flux[i] += M[i] * qn * ev.ds[q];
+  }
+  return flux;
+}
+
+}  // namespace flotsam

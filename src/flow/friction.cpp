@@ -1,0 +1,31 @@
+#include "flow/friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flotsam {
+
+FrictionModel FrictionModel::from(const FlowConfig& flow) {
+  return {flow.friction, flow.friction_coefficient, flow.gravity, flow.min_depth};
+}
+
+double FrictionModel::coefficient_at(double H) const {
+  const double h = std::max(H, min_depth);
+  switch (law) {
+    case FrictionLaw::none:
+      return 0.0;
+    case FrictionLaw::manning:
+      return gravity * coefficient * coefficient / std::cbrt(h);
+    case FrictionLaw::strickler:
+      return gravity / (coefficient * coefficient * std::cbrt(h));
+    case FrictionLaw::chezy:
+      return gravity / (coefficient * coefficient);
+  }
+  return 0.0;
+}
+
+double FrictionModel::rate(double speed, double H) const {
+  return coefficient_at(H) * speed / std::max(H, min_depth);
+}
+
+}  // namespace flotsam

@@ -1,0 +1,254 @@
+#include "flow/shallow_water_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "flow/turbulence.hpp"
+
+namespace flotsam {
+
+// [elements] below which a colour is assembled serially: thread start-up costs more than it saves.
+constexpr size_t parallel_threshold = 512;
+
+ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
+                                       FlowSolverOptions options)
+    : mesh_(mesh),
+      case_(flow_case),
+      options_(std::move(options)),
+      bc_(resolve_boundary_conditions(mesh, flow_case.flow, flow_case.file)),
+      solver_(options_.linear_solver) {}
+
+// ---- setup ----------------------------------------------------------------------------------
+
+void ShallowWaterSolver::initialize() {
+  const BedFunction bed = options_.bed ? options_.bed : make_bed_function(case_.bed);
+  z_b_.resize(mesh_.node_count());
+  for (int i = 0; i < mesh_.node_count(); ++i) z_b_[i] = bed(mesh_.nodes[i]);
+
+  // Still water, eta linear in x between the two initial values (spec 8.2).
+  const auto& flow = case_.flow;
+  double x_min = std::numeric_limits<double>::max(), x_max = -x_min;
+  for (const Vec2& p : mesh_.nodes) {
+    x_min = std::min(x_min, p.x());
+    x_max = std::max(x_max, p.x());
+  }
+  FlowState initial;
+  initial.eta.resize(mesh_.vertex_count);
+  for (int j = 0; j < mesh_.vertex_count; ++j) {
+    const double f = (mesh_.nodes[j].x() - x_min) / std::max(x_max - x_min, 1e-300);
+    initial.eta[j] = flow.initial_eta_start + f * (flow.initial_eta_end - flow.initial_eta_start);
+  }
+  initial.u.assign(mesh_.node_count(), 0.0);
+  initial.v.assign(mesh_.node_count(), 0.0);
+  setup_system();
+  set_state(initial);
+}
+
+void ShallowWaterSolver::setup_system() {
+  std::vector<int> dirichlet_rows, slip_nodes;
+  const int eta_offset = 2 * mesh_.node_count();  // LinearSystem::eta_row before setup
+  for (const auto& n : bc_.elevation_nodes) dirichlet_rows.push_back(eta_offset + n.vertex);
+  for (const auto& n : bc_.velocity_nodes) {
+    dirichlet_rows.push_back(LinearSystem::u_row(n.node));
+    dirichlet_rows.push_back(LinearSystem::v_row(n.node));
+  }
+  for (const auto& n : bc_.slip_nodes) slip_nodes.push_back(n.node);
+  system_.setup(mesh_, dirichlet_rows, slip_nodes);
+  colours_ = element_colours(mesh_);
+  nu_t_.assign(mesh_.element_count(), 0.0);
+  open_flux_.assign(mesh_.group_names.size(), 0.0);
+  elevation_group_.clear();
+  for (const auto& n : bc_.elevation_nodes)
+    elevation_group_.push_back(mesh_.find_group(case_.flow.boundaries[n.condition].group));
+  mid_vertices_.assign(mesh_.node_count(), {-1, -1});
+  for (const auto& el : mesh_.elements)
+    for (int k = 0; k < 3; ++k) mid_vertices_[el[3 + k]] = {el[k], el[(k + 1) % 3]};
+
+  // Integrals of the P1 basis and of the bed, with the assembly's quadrature.
+  lumped_p1_.assign(mesh_.vertex_count, 0.0);
+  bed_volume_ = 0.0;
+  ElementValues ev;
+  for (int e = 0; e < mesh_.element_count(); ++e) {
+    compute_element_values(mesh_, e, ev);
+    const auto& el = mesh_.elements[e];
+    for (int q = 0; q < triangle_point_count; ++q) {
+      for (int j = 0; j < 3; ++j) lumped_p1_[el[j]] += ev.N1[q][j] * ev.JxW[q];
+      for (int k = 0; k < 6; ++k) bed_volume_ += ev.N2[q][k] * z_b_[el[k]] * ev.JxW[q];
+    }
+  }
+}
+
+void ShallowWaterSolver::set_state(const FlowState& s) {
+  const auto depth_at = [&](int node, const FlowState& st) {
+    if (node < mesh_.vertex_count) return st.eta[node] - z_b_[node];
+    return 0.0;  // mid nodes are checked through check_state
+  };
+  const double H_dry = case_.flow.dry_depth;
+  for (int j = 0; j < mesh_.vertex_count; ++j)
+    if (!(depth_at(j, s) >= H_dry))
+      throw_input_error(
+          "{}: initial depth H = {:.6g} m at node {} ({:.6g}, {:.6g}) of mesh {} is "
+          "below the dry depth {} m: the FEM engine needs the domain wet at start "
+          "(eta = {:.6g} m, z_b = {:.6g} m)",
+          case_.file.empty() ? "case" : case_.file, depth_at(j, s),
+          mesh_.node_tags.empty() ? j : mesh_.node_tags[j], mesh_.nodes[j].x(), mesh_.nodes[j].y(),
+          mesh_.source, H_dry, s.eta[j], z_b_[j]);
+  state_ = s;
+  previous_ = s;
+  double H_sum = 0.0, A_sum = 0.0;
+  for (int j = 0; j < mesh_.vertex_count; ++j) {
+    H_sum += lumped_p1_[j] * (s.eta[j] - z_b_[j]);
+    A_sum += lumped_p1_[j];
+  }
+  H_mean_ = H_sum / A_sum;
+  balance_ = WaterBalance{};
+  balance_.initial_volume = balance_.volume = volume();
+  balance_.group_outflow.assign(mesh_.group_names.size(), 0.0);
+}
+
+double ShallowWaterSolver::volume() const {
+  double v = -bed_volume_;
+  for (int j = 0; j < mesh_.vertex_count; ++j) v += lumped_p1_[j] * state_.eta[j];
+  return v;
+}
+
+// ---- one linearised problem -------------------------------------------------------------------
+
+void ShallowWaterSolver::assemble_system(const Iteration& it) {
+  const auto& flow = case_.flow;
+  AssemblyParameters p;
+  p.theta = it.theta;
+  p.inv_dt = it.inv_dt;
+  p.gravity = flow.gravity;
+  p.coriolis =
+      flow.coriolis ? 2.0 * earth_rotation_rate * std::sin(flow.latitude_deg * pi / 180.0) : 0.0;
+  p.wind_stress = air_density / flow.water_density * wind_drag_coefficient * flow.wind.norm() *
+                  flow.wind;  // (M-2) wind, times H
+  p.friction = FrictionModel::from(flow);
+  p.supg = options_.supg;
+  p.source_time = it.t_source;
+  p.source = options_.source ? &options_.source : nullptr;
+
+  system_.set_zero();
+  const FlowState& k = linearisation_;
+  const FlowState& n = previous_;
+  for (const auto& colour : colours_) {
+#pragma omp parallel for schedule(static) if (colour.size() >= parallel_threshold)
+    for (size_t idx = 0; idx < colour.size(); ++idx) {
+      const int e = colour[idx];
+      const auto& el = mesh_.elements[e];
+      ElementValues ev;
+      compute_element_values(mesh_, e, ev);
+      ElementState s;
+      for (int a = 0; a < 6; ++a) {
+        s.u_k[a] = k.u[el[a]];
+        s.v_k[a] = k.v[el[a]];
+        s.u_n[a] = n.u[el[a]];
+        s.v_n[a] = n.v[el[a]];
+        s.z_b[a] = z_b_[el[a]];
+        s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
+      }
+      for (int j = 0; j < 3; ++j) {
+        s.eta_k[j] = k.eta[el[j]];
+        s.eta_n[j] = n.eta[el[j]];
+      }
+      if (!element_forces_.empty()) s.element_force = element_forces_[e];
+      if (flow.turbulence != TurbulenceModel::none) {
+        ElementFlowAverage avg;
+        for (int q = 0; q < triangle_point_count; ++q)
+          for (int b = 0; b < 6; ++b) {
+            const Vec2 ub(s.u_k[b], s.v_k[b]);
+            const double w = ev.JxW[q];
+            avg.u += w * ev.N2[q][b] * ub;
+            avg.grad_u += w * ub * ev.dN2[q][b].transpose();
+            avg.H -= w * ev.N2[q][b] * s.z_b[b];
+            if (b < 3) avg.H += w * ev.N1[q][b] * s.eta_k[b];
+          }
+        double A = 0.0;
+        for (int q = 0; q < triangle_point_count; ++q) A += ev.JxW[q];
+        avg.u /= A;
+        avg.grad_u /= A;
+        avg.H /= A;
+        avg.area = A;
+        nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p.friction,
+                                           avg);  // (M-3)
+      }
+      s.nu_e = flow.viscosity + nu_t_[e];  // (M-3)
+      LocalMatrix K;
+      LocalVector F;
+      assemble_element(p, ev, s, K, F);
+      system_.add(system_.element_rows(mesh_, e), K, F);
+    }
+  }
+
+  // Term (10) on discharge and velocity boundaries: the outflow, known, to the right-hand side.
+  std::fill(open_flux_.begin(), open_flux_.end(), 0.0);
+  EdgeValues ev;
+  for (const auto& open : bc_.open_edges) {
+    const auto& edge = mesh_.boundary[open.boundary_edge];
+    compute_edge_values(mesh_, edge, ev);
+    EdgeState s;
+    for (int m = 0; m < 3; ++m) {
+      const int node = ev.nodes[m];
+      s.z_b[m] = z_b_[node];
+      s.u_new[m] = Vec2(state_.u[node], state_.v[node]);  // the boundary values, set before
+      s.u_n[m] = Vec2(n.u[node], n.v[node]);
+      if (m < 2) {
+        s.eta_k[m] = k.eta[node];
+        s.eta_n[m] = n.eta[node];
+      }
+    }
+    const auto flux = open_boundary_flux(it.theta, ev, s);
+    for (int m = 0; m < 2; ++m) {
+      open_flux_[edge.group] += flux[m];
+      system_.b[system_.eta_row(ev.nodes[m])] -= flux[m];  // (10)
+    }
+  }
+}
+
+void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
+  system_.save_dirichlet_rows();
+  const auto& conditions = case_.flow.boundaries;
+  int slot = 0;
+  for (const auto& n : bc_.elevation_nodes)
+    system_.set_dirichlet(slot++, conditions[n.condition].value(it.t_new));
+  for (const auto& n : bc_.velocity_nodes) {
+    const Vec2 u_b(state_.u[n.node], state_.v[n.node]);  // set by set_boundary_velocities
+    system_.set_dirichlet(slot++, u_b.x());
+    system_.set_dirichlet(slot++, u_b.y());
+  }
+  for (int k = 0; k < static_cast<int>(bc_.slip_nodes.size()); ++k)
+    system_.set_slip(k, bc_.slip_nodes[k].normal);
+}
+
+Eigen::VectorXd ShallowWaterSolver::solve() {
+  if (!solver_.factorize(system_.A))
+    throw_run_error(
+        "flow: t = {:.6g} s: the sparse LU factorisation failed (singular system): "
+        "check the boundary conditions of mesh {}",
+        linearisation_.time, mesh_.source);
+  return solver_.solve(system_.b);
+}
+
+Eigen::VectorXd ShallowWaterSolver::pack(const FlowState& s) const {
+  Eigen::VectorXd x(system_.size());
+  for (int i = 0; i < mesh_.node_count(); ++i) {
+    x[LinearSystem::u_row(i)] = s.u[i];
+    x[LinearSystem::v_row(i)] = s.v[i];
+  }
+  for (int j = 0; j < mesh_.vertex_count; ++j) x[system_.eta_row(j)] = s.eta[j];
+  return x;
+}
+
+void ShallowWaterSolver::unpack(const Eigen::VectorXd& x) {
+  for (int i = 0; i < mesh_.node_count(); ++i) {
+    state_.u[i] = x[LinearSystem::u_row(i)];
+    state_.v[i] = x[LinearSystem::v_row(i)];
+  }
+  for (int j = 0; j < mesh_.vertex_count; ++j) state_.eta[j] = x[system_.eta_row(j)];
+}
+
+}  // namespace flotsam

@@ -1,0 +1,130 @@
+#pragma once
+// The FEM shallow-water engine (spec 1, paper section 2): P2 velocity / P1 elevation
+// (Taylor-Hood) Galerkin finite elements with SUPG, a theta-scheme in time linearised by
+// Newton's method at each step, and one coupled sparse system in (u, v, eta) per iteration,
+// solved by a sparse direct LU whose symbolic analysis is reused. docs/model.md "Flow (spec 1)"
+// gives the weak form (element_assembly.hpp), the choices and the departures.
+//
+// Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
+// -> solve] per iteration -> check_state; step() and solve_steady() call them in order.
+#include <string>
+#include <vector>
+
+#include "flow/bed.hpp"
+#include "flow/boundary_conditions.hpp"
+#include "flow/element_assembly.hpp"
+#include "flow/flow_state.hpp"
+#include "flow/linear_system.hpp"
+#include "flow/water_balance.hpp"
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
+namespace flotsam {
+
+/// Numerical choices of the engine (not physics: those are in FlowConfig).
+struct FlowSolverOptions {
+  double theta = 0.6;                 // [-] 0.5: Crank-Nicolson (no damping), 1: backward Euler
+  int max_iterations = 3;             // Newton iterations per step
+  double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
+  bool supg = true;                   // SUPG stabilisation of advection
+  LinearSolverKind linear_solver = LinearSolverKind::umfpack;
+  double steady_initial_dt = 0.0;     // [s] first pseudo time step; 0: 10 h_min / sqrt(g H_max)
+  double steady_max_dt_factor = 1e4;  // [-] pseudo step cap, in units of the first one
+  BedFunction bed;                    // overrides the case's bed when set (tests)
+  SourceFunction source;              // manufactured source terms when set (tests)
+};
+
+struct StepReport {
+  int iterations = 0;        // Newton iterations taken
+  double last_change = 0.0;  // [-] relative change at the last iteration
+};
+
+struct SteadyReport {
+  bool converged = false;
+  int iterations = 0;
+  std::vector<double> residuals;  // relative residual before each iteration [-]
+};
+
+class ShallowWaterSolver {
+ public:
+  /// Keeps references to `mesh` and `flow_case`, which must outlive the solver. Checks the
+  /// boundary conditions against the mesh (InputError).
+  ShallowWaterSolver(const Mesh& mesh, const Case& flow_case, FlowSolverOptions options = {});
+
+  /// Bed, initial state (still water, eta linear in x between FlowConfig's initial values),
+  /// sparsity pattern. Throws InputError when a node starts with a depth below the dry depth.
+  void initialize();
+  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition.
+  void set_state(const FlowState& state);
+
+  /// Advances the flow by dt [s]. Throws RunError when a node dries or the solution is not
+  /// finite; the state is then left at the start of the step.
+  StepReport step(double dt);
+  /// Drives the flow at the current time to steady state by pseudo-time stepping (backward Euler
+  /// with a growing pseudo step, i.e. Newton's method for the steady equations in the limit),
+  /// until the relative residual is below TimeConfig::steady_tolerance.
+  SteadyReport solve_steady();
+
+  /// Body forces per unit mass [m s^-2] applied from the next step on (two-way coupling):
+  /// per element (constant on it) and per P2 node (interpolated). Empty: none.
+  void set_element_forces(std::vector<Vec2> forces) { element_forces_ = std::move(forces); }
+  void set_node_forces(std::vector<Vec2> forces) { node_forces_ = std::move(forces); }
+
+  // ---- fields ----
+  double time() const { return state_.time; }
+  const FlowState& state() const { return state_; }
+  const FlowState& previous_state() const { return previous_; }
+  const std::vector<double>& eta() const { return state_.eta; }        // [m] P1
+  const std::vector<double>& u() const { return state_.u; }            // [m/s] P2
+  const std::vector<double>& v() const { return state_.v; }            // [m/s] P2
+  const std::vector<double>& bed() const { return z_b_; }              // [m] P2
+  std::vector<double> depth() const;                                   // H [m] P2
+  std::vector<double> vorticity() const;                               // dv/dx - du/dy [1/s] P2
+  const std::vector<double>& eddy_viscosity() const { return nu_t_; }  // nu_t [m^2/s] per element
+  const WaterBalance& water_balance() const { return balance_; }
+  double volume() const;  // [m^3]
+  const Mesh& mesh() const { return mesh_; }
+  const Case& flow_case() const { return case_; }
+  const BoundaryConditions& boundary_conditions() const { return bc_; }
+
+ private:
+  struct Iteration {  // the linearised problem of one iteration
+    double theta, inv_dt, t_new, t_source;
+  };
+  void setup_system();
+  void assemble_system(const Iteration& it);
+  void apply_boundary_conditions(const Iteration& it);
+  void set_boundary_velocities(double t);
+  Eigen::VectorXd solve();
+  void unpack(const Eigen::VectorXd& x);
+  Eigen::VectorXd pack(const FlowState& s) const;
+  void record_fluxes(const Eigen::VectorXd& x);
+  void update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x);
+  void check_state(const FlowState& s, double t) const;
+  double residual_norm(const Eigen::VectorXd& x) const;
+
+  const Mesh& mesh_;
+  const Case& case_;
+  FlowSolverOptions options_;
+  BoundaryConditions bc_;
+  LinearSystem system_;
+  SparseDirectSolver solver_;
+  std::vector<std::vector<int>> colours_;
+
+  std::vector<double> z_b_;        // [m] per P2 node
+  std::vector<double> nu_t_;       // [m^2/s] per element
+  std::vector<double> lumped_p1_;  // [m^2] integral of each P1 basis function
+  std::vector<Vec2> element_forces_, node_forces_;
+  std::vector<double> open_flux_;                 // [m^3/s] term (10) per mesh group, last assembly
+  std::vector<int> elevation_group_;              // per elevation node: its mesh group
+  std::vector<std::array<int, 2>> mid_vertices_;  // per P2 node >= vertex_count: edge ends
+  double bed_volume_ = 0.0;                       // integral of z_b [m^3]
+  double H_mean_ = 1.0;                           // [m] initial mean depth (residual scaling)
+
+  FlowState state_;          // at t^{n+1} (the current iterate during a step)
+  FlowState previous_;       // at t^n
+  FlowState linearisation_;  // x^k of the current iteration
+  WaterBalance balance_;
+};
+
+}  // namespace flotsam

@@ -1,0 +1,64 @@
+// Verifies that steady subcritical flow over a bump follows Bernoulli's equation
+// q^2 / (2 g h^2) + h + z_b = const with constant unit discharge q, within 1% in depth (issue 3
+// item 5; the classic test of Goutal & Maurel 1997, 25 m channel, z_b = 0.2 - 0.05 (x - 10)^2 on
+// 8 < x < 12, q = 4.42 m^2/s, downstream depth 2 m); the outflow equals the inflow to 1e-9.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flow/shallow_water_solver.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+double bump(double x) {
+  return x > 8.0 && x < 12.0 ? 0.2 - 0.05 * (x - 10.0) * (x - 10.0) : 0.0;
+}
+
+// Subcritical root of q^2/(2 g h^2) + h = E - z by Newton from above.
+double bernoulli_depth(double q, double E, double z) {
+  double h = E - z;
+  for (int k = 0; k < 50; ++k) {
+    const double f = q * q / (2 * 9.81 * h * h) + h + z - E;
+    const double df = 1.0 - q * q / (9.81 * h * h * h);
+    h -= f / df;
+  }
+  return h;
+}
+
+TEST(SubcriticalBump, DepthFollowsBernoulli) {
+  const double q = 4.42, h_out = 2.0;  // [m^2/s], [m]
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 25.0, 1.0, 100, 2, true});
+  Case c;
+  c.bed.kind = BedConfig::Kind::table;
+  std::vector<std::pair<double, double>> profile;
+  for (int i = 0; i <= 400; ++i) profile.emplace_back(i * 25.0 / 400, bump(i * 25.0 / 400));
+  c.bed.profile_x = TimeSeries(profile);
+  c.flow.initial_eta_start = c.flow.initial_eta_end = h_out;
+  c.flow.boundaries = {{BoundaryCondition::Kind::discharge, "left", TimeSeries(q * 1.0), {}},
+                       {BoundaryCondition::Kind::elevation, "right", TimeSeries(h_out), {}}};
+  FlowSolverOptions options;
+  options.bed = [](const Vec2& p) { return bump(p.x()); };
+  ShallowWaterSolver solver(mesh, c, options);
+  solver.initialize();
+  const SteadyReport report = solver.solve_steady();
+  ASSERT_TRUE(report.converged);
+  const double E = q * q / (2 * 9.81 * h_out * h_out) + h_out;  // [m] energy head downstream
+  const auto H = solver.depth();
+  double error = 0.0;
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const double h_exact = bernoulli_depth(q, E, bump(mesh.nodes[i].x()));
+    error = std::max(error, std::abs(H[i] - h_exact) / h_exact);
+  }
+  EXPECT_LE(error, 0.01);
+  // Steady state: what leaves through the outlet is what the inlet brings, to 1e-9.
+  const auto& rate = solver.water_balance().group_rate;
+  EXPECT_LE(std::abs(rate[mesh.find_group("left")] + rate[mesh.find_group("right")]) /
+                std::abs(rate[mesh.find_group("left")]),
+            1e-9);
+  std::printf("bump: max relative depth error %.3e, %d iterations\n", error, report.iterations);
+}
+
+}  // namespace
+}  // namespace flotsam
