@@ -1,0 +1,205 @@
+#include "contact/contact_world.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+
+namespace flotsam {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {  // [s] since the last lap
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// Contact points of a manifold become solver points; r_A, r_B are filled by prepare_contacts.
+ContactConstraint make_constraint(const Manifold& m, int a, int b, int segment, double friction,
+                                  double slop, double width) {
+  ContactConstraint c;
+  c.a = a, c.b = b, c.segment = segment;
+  c.normal = m.normal;
+  c.point_count = m.point_count;
+  c.friction = friction;
+  c.slop = slop;
+  c.width = width;
+  c.reference_on_a = m.reference_on_a;
+  c.local_normal = m.local_normal;
+  c.local_plane_point = m.local_plane_point;
+  for (int k = 0; k < m.point_count; ++k) {
+    const ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
+    ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
+    p.separation = mp.separation;
+    p.local_incident = mp.local_incident;
+    p.feature = mp.feature;
+    p.r_a = mp.point;  // world point for now; made relative in collide()
+    p.r_b = mp.point;
+  }
+  return c;
+}
+
+}  // namespace
+
+Rectangle body_rectangle(const BodySet& bodies, int i) {
+  return {{bodies.position[i], bodies.axis(i)}, bodies.half_extents(i)};
+}
+
+ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coefficient)
+    : config_(config), added_mass_coefficient_(added_mass_coefficient) {}
+
+void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double dt) {
+  detect(bodies, walls);
+  solve(bodies, dt);
+  correct_positions(bodies);
+}
+
+void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls) {
+  Stopwatch clock;
+  update_boxes(bodies);
+  profile_.boxes = clock.lap();
+  find_pairs(walls);
+  profile_.broad_phase = clock.lap();
+  collide(bodies, walls);
+  profile_.narrow_phase = clock.lap();
+}
+
+// Each box is the body's footprint grown by its contact margin 2 * allowed_overlap * l, so
+// that every pair the narrow phase would keep (gap <= margin) is a candidate.
+void ContactWorld::update_boxes(const BodySet& bodies) {
+  const int n = bodies.size();
+  boxes_.resize(static_cast<std::size_t>(n));
+  active_.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    active_[i] = bodies.state[i] != BodyState::gone;
+    const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
+    const double grow = 2.0 * config_.allowed_overlap * bodies.width[i];  // [m]
+    const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
+                      std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y() + grow);
+    boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
+  }
+}
+
+void ContactWorld::find_pairs(const BoundarySegments& walls) {
+  if (broad_phase_ == BroadPhase::sweep_and_prune) {
+    sweep_.find_pairs(boxes_, active_, body_pairs_);
+  } else {
+    brute_force_pairs(boxes_, active_, body_pairs_);
+  }
+  wall_pairs_.clear();
+  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i) {
+    if (!active_[i]) continue;
+    if (broad_phase_ == BroadPhase::sweep_and_prune) {
+      walls.query(boxes_[i], found_, stamp_, stamp_value_);
+    } else {
+      found_.resize(static_cast<std::size_t>(walls.size()));
+      for (int s = 0; s < walls.size(); ++s) found_[s] = s;
+    }
+    for (const int s : found_) {
+      const Aabb segment_box{walls.start[s].cwiseMin(walls.end[s]),
+                             walls.start[s].cwiseMax(walls.end[s])};
+      if (segment_box.overlaps(boxes_[i])) wall_pairs_.emplace_back(i, s);
+    }
+  }
+  profile_.body_pairs = static_cast<int>(body_pairs_.size());
+  profile_.wall_pairs = static_cast<int>(wall_pairs_.size());
+}
+
+void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls) {
+  previous_.swap(contacts_);
+  contacts_.clear();
+  auto relative = [&](ContactConstraint& c) {
+    for (int k = 0; k < c.point_count; ++k) {
+      auto& p = c.points[static_cast<std::size_t>(k)];
+      p.r_a = p.r_a - bodies.position[c.a];
+      p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
+    }
+  };
+  for (const auto& [i, j] : body_pairs_) {
+    const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
+    const double slop = config_.allowed_overlap * width;              // [m]
+    const Manifold m = collide_rectangles(body_rectangle(bodies, i), body_rectangle(bodies, j),
+                                          2.0 * slop, 0.1 * slop);
+    if (m.point_count == 0) continue;
+    contacts_.push_back(make_constraint(m, i, j, -1, config_.friction, slop, width));
+    relative(contacts_.back());
+  }
+  for (const auto& [i, s] : wall_pairs_) {
+    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
+    const Manifold m =
+        collide_rectangle_segment(body_rectangle(bodies, i), walls.start[s], walls.end[s],
+                                  walls.normal[s], 2.0 * slop, 0.1 * slop);
+    if (m.point_count == 0) continue;
+    contacts_.push_back(make_constraint(m, i, -1, s, config_.friction, slop, bodies.width[i]));
+    relative(contacts_.back());
+  }
+  profile_.contacts = static_cast<int>(contacts_.size());
+}
+
+// Last step's accumulated impulses seed this step's, matched by (a, b, segment, feature):
+// a resting jam then needs few sweeps.
+void ContactWorld::warm_start_from_previous() {
+  auto key = [](const ContactConstraint& c) { return std::tuple(c.a, c.b, c.segment); };
+  std::sort(previous_.begin(), previous_.end(),
+            [&](const auto& x, const auto& y) { return key(x) < key(y); });
+  for (ContactConstraint& c : contacts_) {
+    const auto it = std::lower_bound(previous_.begin(), previous_.end(), key(c),
+                                     [&](const auto& x, const auto& k) { return key(x) < k; });
+    if (it == previous_.end() || key(*it) != key(c)) continue;
+    for (int k = 0; k < c.point_count; ++k) {
+      auto& p = c.points[static_cast<std::size_t>(k)];
+      for (int q = 0; q < it->point_count; ++q) {
+        const auto& old = it->points[static_cast<std::size_t>(q)];
+        if (old.feature == p.feature) {
+          p.normal_impulse = old.normal_impulse;
+          p.tangent_impulse = old.tangent_impulse;
+        }
+      }
+    }
+  }
+}
+
+// The step that brought the bodies here moved them with their velocities before the contacts
+// acted; the impulses belong to the same step, so the poses are moved on by dt times the change
+// of velocity (x_n+1 = x_n + dt u_n+1, semi-implicit Euler). A resting jam pushed by a steady
+// force then does not creep into its supports by F dt^2 / m per step.
+void ContactWorld::solve(BodySet& bodies, double dt) {
+  Stopwatch clock;
+  masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
+  prepare_contacts(contacts_, bodies, masses_, config_);
+  warm_start_from_previous();
+  velocity_before_ = bodies.velocity;
+  angular_velocity_before_ = bodies.angular_velocity;
+  warm_start_contacts(contacts_, bodies, masses_);
+  profile_.velocity_sweeps = solve_contact_velocities(contacts_, bodies, masses_, config_);
+  for (int i = 0; i < bodies.size(); ++i) {
+    bodies.position[i] += dt * (bodies.velocity[i] - velocity_before_[i]);
+    bodies.angle[i] += dt * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+  }
+  profile_.solve = clock.lap();
+}
+
+void ContactWorld::correct_positions(BodySet& bodies) {
+  Stopwatch clock;
+  profile_.largest_overlap = correct_contact_positions(contacts_, bodies, masses_, config_);
+  profile_.positions = clock.lap();
+}
+
+ContactReport ContactWorld::report(const BoundarySegments& walls, int body_count) const {
+  return make_contact_report(contacts_, walls.group, body_count);
+}
+
+void contact_step(BodySet& bodies, const BoundarySegments& walls, const ContactConfig& config,
+                  double dt) {
+  ContactWorld world(config);
+  world.step(bodies, walls, dt);
+}
+
+}  // namespace flotsam

@@ -1,0 +1,89 @@
+#pragma once
+// The contact stage of a body step (spec 4): one call reads as the pipeline
+//
+//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (impulses)
+//   -> correct_positions
+//
+// each stage timed into ContactProfile, as Box2D's b2World_Step. The world keeps what makes the
+// next step cheap: the sweep order, and last step's impulses to warm-start the solver.
+// Bodies whose state is `gone` take no part.
+#include <vector>
+
+#include "bodies/body_set.hpp"
+#include "contact/boundary_segments.hpp"
+#include "contact/contact_report.hpp"
+#include "contact/impulse_solver.hpp"
+#include "contact/sweep_and_prune.hpp"
+#include "io/case.hpp"
+
+namespace flotsam {
+
+struct ContactProfile {
+  double boxes = 0.0;         // [s] bounding boxes
+  double broad_phase = 0.0;   // [s] body pairs and body-wall candidates
+  double narrow_phase = 0.0;  // [s] manifolds
+  double solve = 0.0;         // [s] impulses
+  double positions = 0.0;     // [s] position correction
+  int body_pairs = 0;         // candidate body pairs from the broad phase
+  int wall_pairs = 0;         // candidate (body, segment) pairs
+  int contacts = 0;           // manifolds with at least one point
+  int velocity_sweeps = 0;
+  double largest_overlap = 0.0;  // [m] after position correction
+};
+
+enum class BroadPhase { sweep_and_prune, brute_force };
+
+class ContactWorld {
+ public:
+  explicit ContactWorld(const ContactConfig& config, double added_mass_coefficient = 0.5);
+
+  /// Detects the contacts of the current poses and resolves them: velocities get the impulses,
+  /// poses move on by dt times the velocity change (the step just taken, dt [s], is redone with
+  /// the new velocities), then the overlap correction.
+  void step(BodySet& bodies, const BoundarySegments& walls, double dt);
+
+  /// Detection alone (boxes, broad phase, narrow phase): fills contacts().
+  void detect(const BodySet& bodies, const BoundarySegments& walls);
+
+  const std::vector<ContactConstraint>& contacts() const { return contacts_; }
+  const std::vector<BodyPair>& body_pairs() const { return body_pairs_; }
+  const std::vector<std::pair<int, int>>& wall_pairs() const { return wall_pairs_; }
+  const ContactProfile& profile() const { return profile_; }
+  ContactReport report(const BoundarySegments& walls, int body_count) const;
+
+  void set_broad_phase(BroadPhase method) { broad_phase_ = method; }
+  const ContactConfig& config() const { return config_; }
+
+ private:
+  void update_boxes(const BodySet& bodies);
+  void find_pairs(const BoundarySegments& walls);
+  void collide(const BodySet& bodies, const BoundarySegments& walls);
+  void warm_start_from_previous();
+  void solve(BodySet& bodies, double dt);
+  void correct_positions(BodySet& bodies);
+
+  ContactConfig config_;
+  double added_mass_coefficient_;  // C_a [-], used when config_.added_mass_in_contact
+  BroadPhase broad_phase_ = BroadPhase::sweep_and_prune;
+  SweepAndPrune sweep_;
+  std::vector<Aabb> boxes_;
+  std::vector<char> active_;
+  std::vector<BodyPair> body_pairs_;
+  std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
+  std::vector<ContactConstraint> contacts_, previous_;
+  SolverMasses masses_;
+  std::vector<Vec2> velocity_before_;  // [m/s]
+  std::vector<double> angular_velocity_before_;  // [rad/s]
+  std::vector<int> found_, stamp_;
+  int stamp_value_ = 0;
+  ContactProfile profile_;
+};
+
+/// One stateless contact solve (no warm start): for callers that keep no world.
+void contact_step(BodySet& bodies, const BoundarySegments& walls, const ContactConfig& config,
+                  double dt);
+
+/// The footprint of body i.
+Rectangle body_rectangle(const BodySet& bodies, int i);
+
+}  // namespace flotsam

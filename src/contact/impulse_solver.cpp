@@ -1,0 +1,232 @@
+#include "contact/impulse_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flotsam {
+namespace {
+
+constexpr double position_stiffness = 0.2;  // beta [-]: fraction of an overlap removed per sweep
+                                            // (Box2D's Baumgarte factor); 1 overshoots
+constexpr double max_correction_fraction = 0.25;  // [-] largest move per sweep, of the thinner
+                                                  // width (guards against far jumps)
+constexpr double max_condition_number = 1000.0;   // [-] of the 2x2 block (Box2D's choice)
+
+// Velocity of body i's material point at offset r from G; zero for a wall (i < 0).
+Vec2 point_velocity(const BodySet& bodies, int i, const Vec2& r) {
+  if (i < 0) return Vec2::Zero();
+  return bodies.velocity[i] + bodies.angular_velocity[i] * perp(r);
+}
+
+// Applies the impulse P at offset r_a to A and -P at offset r_b to B.       (M-9)
+void apply_impulse(BodySet& bodies, const SolverMasses& masses, const ContactConstraint& c,
+                   const Vec2& r_a, const Vec2& r_b, const Vec2& P) {
+  bodies.velocity[c.a] += masses.inverse_mass[c.a] * P;
+  bodies.angular_velocity[c.a] += masses.inverse_inertia[c.a] * cross(r_a, P);
+  if (c.b >= 0) {
+    bodies.velocity[c.b] -= masses.inverse_mass[c.b] * P;
+    bodies.angular_velocity[c.b] -= masses.inverse_inertia[c.b] * cross(r_b, P);
+  }
+}
+
+// 1/K for direction d at offsets r_a, r_b: K = 1/m_A + 1/m_B + (r_A x d)^2/I_A + (r_B x d)^2/I_B.
+double effective_mass(const SolverMasses& m, const ContactConstraint& c, const Vec2& r_a,
+                      const Vec2& r_b, const Vec2& d) {
+  double K = m.inverse_mass[c.a] + m.inverse_inertia[c.a] * std::pow(cross(r_a, d), 2);
+  if (c.b >= 0) K += m.inverse_mass[c.b] + m.inverse_inertia[c.b] * std::pow(cross(r_b, d), 2);
+  return K > 0.0 ? 1.0 / K : 0.0;
+}
+
+double normal_velocity(const BodySet& bodies, const ContactConstraint& c,
+                       const ContactPointConstraint& p) {
+  return (point_velocity(bodies, c.a, p.r_a) - point_velocity(bodies, c.b, p.r_b)).dot(c.normal);
+}
+
+// Friction at each point: the tangential impulse that stops sliding, accumulated and kept in
+// the Coulomb cone |j_t| <= mu_c j_n. Returns the largest velocity change [m/s].
+double solve_friction(ContactConstraint& c, BodySet& bodies, const SolverMasses& masses) {
+  const Vec2 tangent = -perp(c.normal);
+  double change = 0.0;
+  for (int k = 0; k < c.point_count; ++k) {
+    ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
+    const Vec2 dv = point_velocity(bodies, c.a, p.r_a) - point_velocity(bodies, c.b, p.r_b);
+    const double bound = c.friction * p.normal_impulse;  // [N s]
+    const double updated =
+        std::clamp(p.tangent_impulse - p.tangent_mass * dv.dot(tangent), -bound, bound);
+    const double lambda = updated - p.tangent_impulse;
+    p.tangent_impulse = updated;
+    apply_impulse(bodies, masses, c, p.r_a, p.r_b, lambda * tangent);
+    if (p.tangent_mass > 0.0) change = std::max(change, std::abs(lambda) / p.tangent_mass);
+  }
+  return change;
+}
+
+// One point: j = -(v_n - v*)/K, accumulated impulse clamped to >= 0.
+double solve_normal_point(ContactConstraint& c, ContactPointConstraint& p, BodySet& bodies,
+                          const SolverMasses& masses) {
+  const double vn = normal_velocity(bodies, c, p);
+  const double updated = std::max(p.normal_impulse - p.normal_mass * (vn - p.target_velocity), 0.0);
+  const double lambda = updated - p.normal_impulse;
+  p.normal_impulse = updated;
+  apply_impulse(bodies, masses, c, p.r_a, p.r_b, lambda * c.normal);
+  return p.normal_mass > 0.0 ? std::abs(lambda) / p.normal_mass : 0.0;
+}
+
+// Two points at once (Box2D v2.4 block solver). With x the new accumulated impulses and
+// b = v_n - v* - K a (a: the old ones), find x >= 0 with w = K x + b >= 0 and x_i w_i = 0 by
+// trying the four cases: both active, only 1, only 2, none.
+double solve_normal_block(ContactConstraint& c, BodySet& bodies, const SolverMasses& masses) {
+  ContactPointConstraint &p1 = c.points[0], &p2 = c.points[1];
+  const Vec2 a(p1.normal_impulse, p2.normal_impulse);
+  const Vec2 vn(normal_velocity(bodies, c, p1), normal_velocity(bodies, c, p2));
+  const Vec2 b = vn - Vec2(p1.target_velocity, p2.target_velocity) - c.K * a;
+  Vec2 x = -(c.normal_mass * b);
+  if (!(x.x() >= 0.0 && x.y() >= 0.0)) {
+    x = Vec2(-b.x() / c.K(0, 0), 0.0);
+    if (!(x.x() >= 0.0 && c.K(1, 0) * x.x() + b.y() >= 0.0)) {
+      x = Vec2(0.0, -b.y() / c.K(1, 1));
+      if (!(x.y() >= 0.0 && c.K(0, 1) * x.y() + b.x() >= 0.0)) {
+        x = Vec2::Zero();
+        if (!(b.x() >= 0.0 && b.y() >= 0.0)) x = a;  // no case holds (degenerate): keep a
+      }
+    }
+  }
+  const Vec2 d = x - a;
+  apply_impulse(bodies, masses, c, p1.r_a, p1.r_b, d.x() * c.normal);
+  apply_impulse(bodies, masses, c, p2.r_a, p2.r_b, d.y() * c.normal);
+  p1.normal_impulse = x.x();
+  p2.normal_impulse = x.y();
+  return std::max(std::abs(d.x()) * c.K(0, 0), std::abs(d.y()) * c.K(1, 1));
+}
+
+Frame body_frame(const BodySet& bodies, int i) {
+  if (i < 0) return {};
+  return {bodies.position[i], bodies.axis(i)};
+}
+
+}  // namespace
+
+SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
+                                double added_mass_coefficient) {
+  SolverMasses m;
+  const int n = bodies.size();
+  m.inverse_mass.assign(static_cast<std::size_t>(n), 0.0);
+  m.inverse_inertia.assign(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    if (bodies.state[i] == BodyState::gone) continue;
+    // A floating body displaces its own mass (m_f = m_p, spec 2): added mass C_a m_p (M-5).
+    const bool add = config.added_mass_in_contact && bodies.state[i] == BodyState::floating;
+    const double factor = add ? 1.0 + added_mass_coefficient : 1.0;  // [-]
+    m.inverse_mass[i] = 1.0 / (factor * bodies.mass[i]);
+    m.inverse_inertia[i] = 1.0 / (factor * bodies.inertia[i]);
+  }
+  return m;
+}
+
+void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
+                      const SolverMasses& masses, const ContactConfig& config) {
+  for (ContactConstraint& c : contacts) {
+    const Vec2 tangent = -perp(c.normal);
+    for (int k = 0; k < c.point_count; ++k) {
+      ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
+      p.normal_mass = effective_mass(masses, c, p.r_a, p.r_b, c.normal);
+      p.tangent_mass = effective_mass(masses, c, p.r_a, p.r_b, tangent);
+      p.approach_velocity = normal_velocity(bodies, c, p);
+      // Restitution from the velocity before the solve: v* = -e v_n^0.        (M-9)
+      p.target_velocity = p.approach_velocity < -config.restitution_threshold
+                              ? -config.restitution * p.approach_velocity
+                              : 0.0;
+    }
+    c.use_block = false;
+    if (c.point_count == 2) {
+      const auto& p1 = c.points[0];
+      const auto& p2 = c.points[1];
+      const double k11 = 1.0 / p1.normal_mass, k22 = 1.0 / p2.normal_mass;
+      double k12 = masses.inverse_mass[c.a] +
+                   masses.inverse_inertia[c.a] * cross(p1.r_a, c.normal) * cross(p2.r_a, c.normal);
+      if (c.b >= 0) {
+        k12 += masses.inverse_mass[c.b] +
+               masses.inverse_inertia[c.b] * cross(p1.r_b, c.normal) * cross(p2.r_b, c.normal);
+      }
+      c.K << k11, k12, k12, k22;
+      if (k11 * k11 < max_condition_number * (k11 * k22 - k12 * k12)) {
+        c.use_block = true;
+        c.normal_mass = c.K.inverse();
+      }
+    }
+  }
+}
+
+void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                         const SolverMasses& masses) {
+  for (const ContactConstraint& c : contacts) {
+    const Vec2 tangent = -perp(c.normal);
+    for (int k = 0; k < c.point_count; ++k) {
+      const ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
+      apply_impulse(bodies, masses, c, p.r_a, p.r_b,
+                    p.normal_impulse * c.normal + p.tangent_impulse * tangent);
+    }
+  }
+}
+
+int solve_contact_velocities(std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                             const SolverMasses& masses, const ContactConfig& config) {
+  int sweep = 0;
+  while (sweep < config.iterations) {
+    ++sweep;
+    double change = 0.0;  // largest velocity change of a point in this sweep [m/s]
+    for (ContactConstraint& c : contacts) {
+      if (c.use_block) {
+        change = std::max(change, solve_normal_block(c, bodies, masses));
+      } else {
+        for (int k = 0; k < c.point_count; ++k) {
+          change = std::max(
+              change, solve_normal_point(c, c.points[static_cast<std::size_t>(k)], bodies, masses));
+        }
+      }
+      change = std::max(change, solve_friction(c, bodies, masses));
+    }
+    if (change <= config.velocity_tolerance) break;
+  }
+  return sweep;
+}
+
+double correct_contact_positions(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                                 const SolverMasses& masses, const ContactConfig& config) {
+  double worst = 0.0;  // largest overlap measured in the last sweep [m]
+  for (int sweep = 0; sweep < config.position_iterations; ++sweep) {
+    worst = 0.0;
+    bool settled = true;  // every overlap within 1.5 times its slop
+    for (const ContactConstraint& c : contacts) {
+      const int reference = c.reference_on_a ? c.a : c.b;
+      const int incident = c.reference_on_a ? c.b : c.a;
+      const double max_correction = max_correction_fraction * c.width;  // [m]
+      for (int k = 0; k < c.point_count; ++k) {
+        const ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
+        // Re-measure s from the current poses: the incident point against the reference face.
+        const Frame ref = body_frame(bodies, reference), inc = body_frame(bodies, incident);
+        const Vec2 n_ref = ref.rotate(c.local_normal);
+        const Vec2 x = inc.to_world(p.local_incident);
+        const double s = (x - ref.to_world(c.local_plane_point)).dot(n_ref);
+        const Vec2 n = c.reference_on_a ? Vec2(-n_ref) : n_ref;  // from B towards A
+        worst = std::max(worst, -s);
+        if (s < -1.5 * c.slop) settled = false;
+        // C = beta (s + slop) in [-max_correction, 0]; pseudo-impulse -C/K along n.
+        const double C = std::clamp(position_stiffness * (s + c.slop), -max_correction, 0.0);
+        const Vec2 r_a = x - bodies.position[c.a];
+        const Vec2 r_b = c.b >= 0 ? Vec2(x - bodies.position[c.b]) : Vec2::Zero();
+        const Vec2 P = -C * effective_mass(masses, c, r_a, r_b, n) * n;
+        bodies.position[c.a] += masses.inverse_mass[c.a] * P;
+        bodies.angle[c.a] += masses.inverse_inertia[c.a] * cross(r_a, P);
+        if (c.b >= 0) {
+          bodies.position[c.b] -= masses.inverse_mass[c.b] * P;
+          bodies.angle[c.b] -= masses.inverse_inertia[c.b] * cross(r_b, P);
+        }
+      }
+    }
+    if (settled) break;
+  }
+  return worst;
+}
+
+}  // namespace flotsam

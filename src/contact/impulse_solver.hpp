@@ -1,0 +1,94 @@
+#pragma once
+// Impulse response (spec 4.3): sequential impulses over all contacts, then a position
+// correction. Box2D v2.4's contact solver, with the spec's (M-9) as its one-contact case.
+//
+// Velocity stage. At a contact point M with r_A = M - G_A, r_B = M - G_B and normal n (B -> A):
+//
+//   v_n = [ (u_A + omega_A k x r_A) - (u_B + omega_B k x r_B) ] . n                  (M-9), (P-25)
+//   K   = 1/m_A + 1/m_B + (r_A x n)^2 / I_A + (r_B x n)^2 / I_B
+//
+// The impulse j n that brings v_n to the target v* = -e v_n^0 (v_n^0: the approach velocity
+// before the solve, when approaching faster than the restitution threshold; else 0) is
+// j = -(v_n - v*) / K; for one contact starting from v_n = v_n^0 this is (M-9)'s
+// j = -(1 + e) v_n^0 / K. With many contacts each point's j is accumulated over sweeps and the
+// running sum clamped to >= 0 (contacts push, never pull) until the normal velocities settle.
+// Two-point manifolds are solved as one 2x2 complementarity problem (block solver), so that
+// parallel logs do not converge slowly through their nearly dependent rows. Friction: the
+// tangential impulse accumulated at each point stays within +- mu_c times its normal impulse.
+//
+// Position stage (non-linear Gauss-Seidel). The separation s of each point is re-measured from
+// the current poses; a pseudo-impulse -C/K along n, C = beta (s + slop) clamped to
+// [-max_correction, 0], moves the two bodies apart. It changes positions and angles only, never
+// velocities, so it adds no kinetic energy.
+#include <array>
+#include <vector>
+
+#include "bodies/body_set.hpp"
+#include "contact/contact_geometry.hpp"
+#include "io/case.hpp"
+
+namespace flotsam {
+
+struct ContactPointConstraint {
+  Vec2 r_a = Vec2::Zero(), r_b = Vec2::Zero();  // M - G_A, M - G_B [m]
+  double normal_mass = 0.0;                     // 1/K along n [kg]
+  double tangent_mass = 0.0;                    // 1/K along the tangent [kg]
+  double normal_impulse = 0.0;                  // accumulated j [N s]
+  double tangent_impulse = 0.0;                 // accumulated friction impulse [N s]
+  double approach_velocity = 0.0;               // v_n before the solve [m/s]
+  double target_velocity = 0.0;                 // v* [m/s]
+  double separation = 0.0;                      // s at detection [m]
+  Vec2 local_incident = Vec2::Zero();           // incident point, incident body frame [m]
+  int feature = 0;
+};
+
+/// One manifold between body a and body b, or between body a and a wall segment (b = -1).
+struct ContactConstraint {
+  int a = -1, b = -1;           // body indices; b = -1 for a wall
+  int segment = -1;             // wall segment index when b = -1
+  Vec2 normal = Vec2::UnitX();  // n, unit, from B towards A
+  int point_count = 0;
+  std::array<ContactPointConstraint, 2> points;
+  double friction = 0.0;  // mu_c [-]
+  double slop = 0.0;      // overlap left uncorrected so that resting contacts persist [m]
+  double width = 0.0;     // l of the thinner body (of A for a wall) [m]
+  // Two-point block solver: K and its inverse, when well conditioned.
+  bool use_block = false;
+  Mat2 K = Mat2::Zero();            // [1/kg]
+  Mat2 normal_mass = Mat2::Zero();  // K^-1 [kg]
+  // Reference face in its body's frame, for the position stage.
+  bool reference_on_a = true;
+  Vec2 local_normal = Vec2::UnitX();
+  Vec2 local_plane_point = Vec2::Zero();  // [m]
+};
+
+/// Inverse masses and inertias used by the solver (added mass included when configured).
+struct SolverMasses {
+  std::vector<double> inverse_mass;     // 1/m [1/kg], 0 for gone bodies
+  std::vector<double> inverse_inertia;  // 1/I [1/(kg m^2)]
+};
+
+SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
+                                double added_mass_coefficient);
+
+/// Fills r_A, r_B, the effective masses, approach and target velocities of every point.
+void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
+                      const SolverMasses& masses, const ContactConfig& config);
+
+/// Applies the accumulated impulses the points start with (warm start from the last step).
+void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                         const SolverMasses& masses);
+
+/// Sequential impulses until the largest change of a point's normal or tangential velocity in
+/// a sweep is below config.velocity_tolerance, or config.iterations sweeps. Returns the number
+/// of sweeps.
+int solve_contact_velocities(std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                             const SolverMasses& masses, const ContactConfig& config);
+
+/// Non-linear Gauss-Seidel position correction, until every overlap is within 1.5 times its
+/// slop or config.position_iterations sweeps; returns the largest overlap seen in the last
+/// sweep [m].
+double correct_contact_positions(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+                                 const SolverMasses& masses, const ContactConfig& config);
+
+}  // namespace flotsam

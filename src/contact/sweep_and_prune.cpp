@@ -1,0 +1,92 @@
+#include "contact/sweep_and_prune.hpp"
+
+#include <algorithm>
+
+namespace flotsam {
+namespace {
+
+// Axis along which the active boxes' centres have the larger variance.
+int spread_axis(const std::vector<Aabb>& boxes, const std::vector<char>& active) {
+  Vec2 sum = Vec2::Zero(), sum_squares = Vec2::Zero();
+  int n = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (!active[i]) continue;
+    const Vec2 c = 0.5 * (boxes[i].lower + boxes[i].upper);
+    sum += c;
+    sum_squares += c.cwiseProduct(c);
+    ++n;
+  }
+  if (n == 0) return 0;
+  const Vec2 variance = sum_squares / n - (sum / n).cwiseProduct(sum / n);
+  return variance.y() > variance.x() ? 1 : 0;
+}
+
+}  // namespace
+
+void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
+                               std::vector<BodyPair>& pairs) {
+  pairs.clear();
+  const int n = static_cast<int>(boxes.size());
+  const int axis = spread_axis(boxes, active);
+  const int other = 1 - axis;
+
+  // Keep the previous order, dropping bodies no longer active and appending new ones.
+  std::vector<char> listed(static_cast<std::size_t>(n), 0);
+  std::erase_if(order_, [&](int i) { return i >= n || !active[i]; });
+  for (int i : order_) listed[i] = 1;
+  for (int i = 0; i < n; ++i) {
+    if (active[i] && !listed[i]) order_.push_back(i);
+  }
+
+  auto key = [&](int i) { return boxes[i].lower[axis]; };
+  swaps_ = 0;
+  if (axis != axis_) {
+    axis_ = axis;
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return key(a) < key(b); });
+  } else {
+    // Insertion sort: O(N + number of swaps) on a nearly sorted list.
+    for (std::size_t k = 1; k < order_.size(); ++k) {
+      const int body = order_[k];
+      const double value = key(body);
+      std::size_t m = k;
+      while (m > 0 && key(order_[m - 1]) > value) {
+        order_[m] = order_[m - 1];
+        --m;
+      }
+      swaps_ += static_cast<long>(k - m);
+      order_[m] = body;
+    }
+  }
+
+  const std::size_t count = order_.size();
+  lower_.resize(count), upper_.resize(count), other_lower_.resize(count),
+      other_upper_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Aabb& b = boxes[order_[k]];
+    lower_[k] = b.lower[axis], upper_[k] = b.upper[axis];
+    other_lower_[k] = b.lower[other], other_upper_[k] = b.upper[other];
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const double end = upper_[k], lo = other_lower_[k], hi = other_upper_[k];
+    for (std::size_t m = k + 1; m < count && lower_[m] <= end; ++m) {
+      if (other_lower_[m] <= hi && lo <= other_upper_[m]) {
+        const int i = order_[k], j = order_[m];
+        pairs.emplace_back(std::min(i, j), std::max(i, j));
+      }
+    }
+  }
+}
+
+void brute_force_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
+                       std::vector<BodyPair>& pairs) {
+  pairs.clear();
+  const int n = static_cast<int>(boxes.size());
+  for (int i = 0; i < n; ++i) {
+    if (!active[i]) continue;
+    for (int j = i + 1; j < n; ++j) {
+      if (active[j] && boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
+    }
+  }
+}
+
+}  // namespace flotsam
