@@ -25,11 +25,11 @@ void add_info_command(CLI::App& app) {
       "Print what a mesh holds: nodes, elements, boundary groups with their lengths, element\n"
       "sizes and quality. FILE is a Gmsh .msh file, or a case file whose mesh is generated.\n"
       "Example: flotsam info out/bridge.msh");
-  cmd->add_option("file", *path, "mesh (.msh) or case file (.yaml)")->required()->check(
-      CLI::ExistingFile);
-  cmd->callback([path] {
-    fmt::print("{}", format_mesh_summary(summarize_mesh(load_mesh_from(*path))));
-  });
+  cmd->add_option("file", *path, "mesh (.msh) or case file (.yaml)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->callback(
+      [path] { fmt::print("{}", format_mesh_summary(summarize_mesh(load_mesh_from(*path)))); });
 }
 
 }  // namespace flotsam::cli

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   flotsam::cli::add_mesh_command(app);
   flotsam::cli::add_info_command(app);
+  flotsam::cli::add_run_command(app);
   try {
     app.parse(argc, argv);  // runs the chosen command's callback
   } catch (const CLI::ParseError& e) {

@@ -31,8 +31,9 @@ void add_mesh_command(CLI::App& app) {
       "Generate the mesh of a case file's geometry (channel with piers, bend, polygon) with Gmsh\n"
       "and write it as a Gmsh .msh file (MSH 4.1; .msh2 for MSH 2.2).\n"
       "Example: flotsam mesh examples/bridge_piers.yaml -o out/bridge.msh --vtu out/bridge.vtu");
-  cmd->add_option("case", options->case_file, "case file (YAML)")->required()->check(
-      CLI::ExistingFile);
+  cmd->add_option("case", options->case_file, "case file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->msh, "mesh file to write (.msh)")->required();
   cmd->add_option("--vtu", options->vtu, "also write the mesh for ParaView (.vtu)");
   cmd->add_flag("--overwrite", options->overwrite, "replace output files that exist");

@@ -1,0 +1,45 @@
+// flotsam run CASE.yaml: mesh the case, run it, write results for ParaView and CSV tables, and
+// print the end-of-run summary.
+#include <fmt/core.h>
+
+#include "cli/commands.hpp"
+#include "coupling/simulation.hpp"
+#include "io/case_file.hpp"
+#include "mesh/mesh_generator.hpp"
+
+namespace flotsam::cli {
+
+void add_run_command(CLI::App& app) {
+  struct Options {
+    std::string case_file, output;
+    bool overwrite = false, quiet = false;
+    double end = -1.0;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "run",
+      "Run a case: the flow, and the bodies with their contacts when the case has any.\n"
+      "Results go to <output.directory>/<name>/ (open <name>.pvd in ParaView).\n"
+      "Example: flotsam run examples/bridge_piers.yaml");
+  cmd->add_option("case", options->case_file, "case file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", options->output,
+                  "output folder (default: <output.directory>/<name> from the case)");
+  cmd->add_flag("--overwrite", options->overwrite,
+                "replace the results of an earlier run in the output folder");
+  cmd->add_option("--end", options->end, "end time [s], instead of the case's time.end")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("-q,--quiet", options->quiet, "no progress line");
+  cmd->callback([options] {
+    Case c = read_case(options->case_file);
+    if (options->end > 0) c.time.end = options->end;
+    Mesh mesh = generate_mesh(c.mesh);
+    RunOptions run{options->output, options->overwrite, true, !options->quiet};
+    Simulation simulation(std::move(c), std::move(mesh), run);
+    simulation.run();
+    fmt::print("{}", simulation.summary());
+  });
+}
+
+}  // namespace flotsam::cli

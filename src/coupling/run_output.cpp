@@ -1,0 +1,77 @@
+#include "coupling/run_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "io/output_directory.hpp"
+#include "io/vtk_writer.hpp"
+
+namespace flotsam {
+
+RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
+                     const Mesh& mesh, bool overwrite, const std::string& case_file)
+    : directory_(prepare_output_directory(directory.string(), overwrite, case_file)),
+      name_(name),
+      flow_index_((directory_ / (name + ".pvd")).string()),
+      body_index_((directory_ / (name + "_bodies.pvd")).string()) {
+  write_boundary_vtp((directory_ / "boundary.vtp").string(), mesh);
+  balance_ = std::make_unique<CsvWriter>(
+      (directory_ / (name + "_balance.csv")).string(),
+      std::vector<std::string>{"t [s]", "volume [m^3]", "outflow [m^3]", "balance error [m^3]",
+                               "relative error [-]"});
+}
+
+void RunOutput::write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies) {
+  write_flow(flow);
+  if (with_bodies) write_bodies(bodies, flow.time());
+  const WaterBalance& b = flow.water_balance();
+  balance_->row({flow.time(), b.volume, b.outflow, b.error(), b.relative_error()});
+  ++index_;
+}
+
+void RunOutput::write_flow(const ShallowWaterSolver& flow) {
+  const Mesh& mesh = flow.mesh();
+  const std::vector<double> H = flow.depth(), vorticity = flow.vorticity();
+  std::vector<Vec2> u(mesh.node_count());
+  std::vector<double> speed(mesh.node_count());
+  for (int n = 0; n < mesh.node_count(); ++n) {
+    u[n] = Vec2(flow.u()[n], flow.v()[n]);
+    speed[n] = u[n].norm();
+  }
+  VtuFields fields;
+  fields.add_p1_scalar("eta [m]", flow.eta());
+  fields.add_point_scalar("H [m]", H);
+  fields.add_point_scalar("z_b [m]", flow.bed());
+  fields.add_point_vector("u [m/s]", u);
+  fields.add_point_scalar("|u| [m/s]", speed);
+  fields.add_point_scalar("vorticity [1/s]", vorticity);
+  fields.add_cell_scalar("nu_t [m^2/s]", flow.eddy_viscosity());
+  const std::string file = fmt::format("flow_{:06d}.vtu", index_);
+  write_vtu((directory_ / file).string(), mesh, fields, flow.time());
+  flow_index_.add(flow.time(), file);
+}
+
+void RunOutput::write_bodies(const BodySet& bodies, double t) {
+  const std::string file = fmt::format("bodies_{:06d}.vtp", index_);
+  BodyFields extra;
+  extra.add_vector("drag [N]", bodies.drag_force);
+  extra.add_vector("bed force [N]", bodies.bed_force);
+  extra.add_vector("reaction [N]", bodies.reaction_force);
+  extra.add_scalar("torque [N m]", bodies.torque);
+  write_bodies_vtp((directory_ / file).string(), bodies, extra, t);
+  body_index_.add(t, file);
+  if (!trajectories_)
+    trajectories_ = std::make_unique<CsvWriter>(
+        (directory_ / (name_ + "_bodies.csv")).string(),
+        std::vector<std::string>{"t [s]", "id", "x [m]", "y [m]", "angle [rad]", "u [m/s]",
+                                 "v [m/s]", "omega [rad/s]", "state (0 floating 1 grounded)"});
+  for (int i = 0; i < bodies.size(); ++i)
+    if (bodies.state[i] != BodyState::gone)
+      trajectories_->row({t, static_cast<double>(bodies.id[i]), bodies.position[i].x(),
+                          bodies.position[i].y(), bodies.angle[i], bodies.velocity[i].x(),
+                          bodies.velocity[i].y(), bodies.angular_velocity[i],
+                          static_cast<double>(bodies.state[i])});
+}
+
+}  // namespace flotsam

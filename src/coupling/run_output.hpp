@@ -1,0 +1,42 @@
+#pragma once
+// What a run writes (docs/output-format.md): into <output.directory>/<name>/
+//   <name>.pvd + flow_NNNNNN.vtu          flow fields every output interval
+//   <name>_bodies.pvd + bodies_NNNNNN.vtp bodies (when the case has any)
+//   boundary.vtp                          the boundary with its groups, once
+//   <name>_bodies.csv                     every body at every output time (trajectories)
+//   <name>_balance.csv                    water volume balance at every output time
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "bodies/body_set.hpp"
+#include "flow/shallow_water_solver.hpp"
+#include "io/csv_writer.hpp"
+#include "io/pvd_writer.hpp"
+
+namespace flotsam {
+
+class RunOutput {
+ public:
+  /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp.
+  RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
+            bool overwrite, const std::string& case_file);
+
+  /// Writes output number `index_` at the solver's current time.
+  void write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies);
+
+  const std::filesystem::path& directory() const { return directory_; }
+  int count() const { return index_; }
+
+ private:
+  void write_flow(const ShallowWaterSolver& flow);
+  void write_bodies(const BodySet& bodies, double t);
+
+  std::filesystem::path directory_;
+  std::string name_;
+  int index_ = 0;
+  PvdWriter flow_index_, body_index_;
+  std::unique_ptr<CsvWriter> trajectories_, balance_;
+};
+
+}  // namespace flotsam

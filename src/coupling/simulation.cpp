@@ -1,0 +1,203 @@
+#include "coupling/simulation.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "bodies/outflow.hpp"
+#include "core/error.hpp"
+#include "coupling/progress.hpp"
+#include "io/case_file.hpp"
+
+namespace flotsam {
+
+Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
+    : case_(std::move(run_case)), mesh_(std::move(mesh)), options_(std::move(options)) {
+  has_bodies_ = !case_.bodies.bodies.empty() || !case_.bodies.releases.empty();
+}
+
+void Simulation::initialize() {
+  check_case_against_mesh(case_, mesh_.group_names);
+  flow_ = std::make_unique<ShallowWaterSolver>(mesh_, case_);
+  flow_->initialize();
+  flow_field_ = std::make_unique<FemFlowField>(*flow_);
+  if (case_.time.mode == CouplingMode::frozen) {
+    const SteadyReport steady = flow_->solve_steady();
+    if (!steady.converged)
+      throw_run_error(
+          "the steady flow for frozen mode did not converge in {} iterations (relative residual "
+          "{:.3g}, asked {:.3g}); raise time.steady_max_iterations or check the case",
+          steady.iterations, steady.residuals.empty() ? 0.0 : steady.residuals.back(),
+          case_.time.steady_tolerance);
+    spdlog::info("steady flow: residual {:.3g} after {} iterations", steady.residuals.back(),
+                 steady.iterations);
+  }
+  time_ = flow_->time();
+
+  for (const auto& bc : case_.flow.boundaries) {
+    const bool open = bc.kind == BoundaryCondition::Kind::elevation ||
+                      bc.kind == BoundaryCondition::Kind::discharge;
+    const int g = mesh_.find_group(bc.group);
+    if (open && g >= 0 &&
+        std::find(outflow_groups_.begin(), outflow_groups_.end(), g) == outflow_groups_.end())
+      outflow_groups_.push_back(g);
+  }
+  if (has_bodies_) {
+    bodies_.water_density = case_.flow.water_density;
+    const PlacementCheck check{case_.file, case_.flow.dry_depth};
+    add_explicit_bodies(bodies_, case_.bodies.bodies, *flow_field_, time_, check);
+    releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
+    integrator_ =
+        std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
+    contacts_ = std::make_unique<ContactWorld>(case_.bodies.contact,
+                                               case_.bodies.physics.added_mass_coefficient);
+    walls_ = extract_boundary_segments(mesh_, solid_group_indices(mesh_, case_.flow.boundaries));
+  }
+  if (options_.write_output) {
+    const auto dir = options_.output_directory.empty()
+                         ? std::filesystem::path(case_.output.directory) / case_.name
+                         : options_.output_directory;
+    output_ = std::make_unique<RunOutput>(dir, case_.name, mesh_,
+                                          options_.overwrite || case_.output.overwrite, case_.file);
+  }
+  next_output_ = time_;
+  write_output_if_due(false);
+}
+
+bool Simulation::done() const {
+  return time_ >= case_.time.end - 1e-9 * case_.time.step;
+}
+
+// The simulation step: the stages in order, each timed (docs/architecture.md).
+void Simulation::step() {
+  const double t0 = time_, t1 = std::min(time_ + case_.time.step, case_.time.end);
+  advance_flow(t1);
+  if (has_bodies_) {
+    advance_bodies(t0, t1);
+    apply_reaction();
+  }
+  time_ = t1;
+  ++step_count_;
+  check_diagnostics();
+  write_output_if_due(false);
+}
+
+void Simulation::advance_flow(double t1) {
+  auto timed = timer_.time(Stage::flow);
+  if (case_.time.mode == CouplingMode::frozen) return;  // the steady flow stays
+  flow_->step(t1 - flow_->time());
+}
+
+void Simulation::advance_bodies(double t0, double t1) {
+  {
+    auto timed = timer_.time(Stage::bodies);
+    releaser_->release(bodies_, *flow_field_, t0, t1);
+  }
+  // RKF45 sub-steps of every body; contacts resolved at the end of each contact interval.
+  const ContactHook resolve_contacts = [this, dt = t1 - t0](double, BodySet& bodies) {
+    auto timed = timer_.time(Stage::contacts);
+    contacts_->step(bodies, walls_, dt);
+  };
+  IntegrationStats stats;
+  {
+    auto timed = timer_.time(Stage::bodies);
+    stats = integrator_->advance(bodies_, *flow_field_, t0, t1, resolve_contacts);
+  }
+  integration_totals_.accepted += stats.accepted;
+  integration_totals_.rejected += stats.rejected;
+  integration_totals_.contact_intervals =
+      std::max(integration_totals_.contact_intervals, stats.contact_intervals);
+
+  auto timed = timer_.time(Stage::bodies);
+  const OutflowResult out = remove_outflowing_bodies(bodies_, *flow_field_, t1, outflow_groups_);
+  if (!out.stray.empty()) {
+    const int i = out.stray.front();
+    throw_run_error(
+        "t = {:.3f} s: body {} is outside the domain at ({:.3f}, {:.3f}) m, through a wall; "
+        "contacts should have stopped it (a smaller time.step may help)",
+        t1, bodies_.id[i], bodies_.position[i].x(), bodies_.position[i].y());
+  }
+}
+
+void Simulation::apply_reaction() {
+  if (case_.time.mode != CouplingMode::two_way) return;
+  auto timed = timer_.time(Stage::reaction);
+  // Spec 5 step 3: the fluid gets -F_x, F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt), spread over
+  // the footprint; it acts during the next flow step.
+  std::vector<BodyReaction> reactions;
+  reactions.reserve(bodies_.size());
+  for (int i = 0; i < bodies_.size(); ++i)
+    if (bodies_.state[i] != BodyState::gone)
+      reactions.push_back({bodies_.position[i], bodies_.half_extents(i), bodies_.angle[i],
+                           -bodies_.reaction_force[i]});
+  flow_field_->set_body_reactions(reactions);
+}
+
+void Simulation::check_diagnostics() {
+  auto timed = timer_.time(Stage::diagnostics);
+  for (int i = 0; i < bodies_.size(); ++i)
+    if (!std::isfinite(bodies_.position[i].x()) || !std::isfinite(bodies_.position[i].y()) ||
+        !std::isfinite(bodies_.angle[i]))
+      throw_run_error("t = {:.3f} s: body {} has a non-finite position or angle", time_,
+                      bodies_.id[i]);
+}
+
+void Simulation::write_output_if_due(bool force) {
+  if (!output_) return;
+  if (!force && time_ < next_output_ - 1e-9 * case_.time.step) return;
+  auto timed = timer_.time(Stage::output);
+  output_->write(*flow_, bodies_, has_bodies_);
+  while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
+}
+
+void Simulation::run() {
+  initialize();
+  Progress progress(time_, case_.time.end);
+  while (!done()) {
+    step();
+    if (options_.progress) {
+      int active = 0;
+      for (auto s : bodies_.state) active += s != BodyState::gone;
+      progress.update(
+          time_, step_count_,
+          has_bodies_ ? fmt::format("bodies {} in, {} out", active, bodies_.outflow_count) : "");
+    }
+  }
+  progress.finish();
+  if (output_ && output_->count() > 0 && next_output_ - case_.output.interval < time_ - 1e-9)
+    write_output_if_due(true);  // the final state, when the last interval was not complete
+}
+
+std::string Simulation::summary() const {
+  std::string s;
+  const WaterBalance& b = flow_->water_balance();
+  s += fmt::format("simulated        {:.1f} s in {} steps of {} s ({} mode)\n", time_, step_count_,
+                   case_.time.step,
+                   case_.time.mode == CouplingMode::frozen    ? "frozen"
+                   : case_.time.mode == CouplingMode::one_way ? "one-way"
+                                                              : "two-way");
+  s += fmt::format("water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3\n",
+                   b.volume, b.initial_volume, b.outflow);
+  s += fmt::format("water balance    {:.3g} m^3, relative {:.3g}\n", b.error(), b.relative_error());
+  if (has_bodies_) {
+    int floating = 0, grounded = 0;
+    for (auto st : bodies_.state) {
+      floating += st == BodyState::floating;
+      grounded += st == BodyState::grounded;
+    }
+    s += fmt::format("bodies           {} in all: {} floating, {} grounded, {} left\n",
+                     bodies_.size(), floating, grounded, bodies_.outflow_count);
+    s += fmt::format("RKF45 sub-steps  {} accepted, {} rejected\n", integration_totals_.accepted,
+                     integration_totals_.rejected);
+  }
+  s += "wall time       ";
+  for (int k = 0; k < static_cast<int>(Stage::count); ++k)
+    s += fmt::format(" {} {:.2f} s", stage_names[k], timer_.seconds(static_cast<Stage>(k)));
+  s += "\n";
+  if (output_) s += fmt::format("results in       {}\n", output_->directory().string());
+  return s;
+}
+
+}  // namespace flotsam

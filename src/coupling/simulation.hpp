@@ -1,0 +1,91 @@
+#pragma once
+// One run of a case (spec 5): the flow, the bodies and their contacts advanced together, flow
+// step after flow step. step() reads as the pipeline of docs/architecture.md:
+//
+//   flow -> bodies (RKF45 sub-steps, contacts after each contact interval) -> outflow/release
+//   -> reaction (two-way) -> diagnostics -> output
+//
+// Modes (TimeConfig::mode): `frozen` solves the flow to steady state once and moves the bodies
+// in it; `one-way` advances the flow and the bodies feel it; `two-way` also gives the flow the
+// bodies' reaction. A case without bodies is a flow-only run.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bodies/body_integrator.hpp"
+#include "bodies/body_set.hpp"
+#include "bodies/release.hpp"
+#include "contact/boundary_segments.hpp"
+#include "contact/contact_world.hpp"
+#include "coupling/run_output.hpp"
+#include "coupling/stage_timer.hpp"
+#include "flow/fem_flow_field.hpp"
+#include "flow/shallow_water_solver.hpp"
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
+namespace flotsam {
+
+struct RunOptions {
+  std::filesystem::path output_directory;  // "" : <output.directory>/<name> of the case
+  bool overwrite = false;                  // or the case's output.overwrite
+  bool write_output = true;                // false: compute only (tests, benchmarks)
+  bool progress = true;                    // progress line on stderr
+};
+
+class Simulation {
+ public:
+  /// Takes the case and its mesh; nothing is computed or written before initialize().
+  Simulation(Case run_case, Mesh mesh, RunOptions options = {});
+
+  /// Flow initial state (steady state in frozen mode), bodies placed and checked, the output
+  /// folder prepared and the state at the start written.
+  void initialize();
+  bool done() const;
+  /// One flow step [t, t + dt].
+  void step();
+  /// initialize(), step() until the end time, then the final output.
+  void run();
+  /// The end-of-run summary: water balance, bodies, integration and stage timings.
+  std::string summary() const;
+
+  double time() const { return time_; }
+  long step_count() const { return step_count_; }
+  const ShallowWaterSolver& flow() const { return *flow_; }
+  const BodySet& bodies() const { return bodies_; }
+  const StageTimer& timer() const { return timer_; }
+  const Case& run_case() const { return case_; }
+  bool has_bodies() const { return has_bodies_; }
+
+ private:
+  void advance_flow(double t1);
+  void advance_bodies(double t0, double t1);
+  void apply_reaction();
+  void check_diagnostics();
+  void write_output_if_due(bool force);
+
+  Case case_;
+  Mesh mesh_;
+  RunOptions options_;
+  bool has_bodies_ = false;
+
+  std::unique_ptr<ShallowWaterSolver> flow_;
+  std::unique_ptr<FemFlowField> flow_field_;
+  BodySet bodies_;
+  std::unique_ptr<BodyIntegrator> integrator_;
+  std::unique_ptr<Releaser> releaser_;
+  std::unique_ptr<ContactWorld> contacts_;
+  BoundarySegments walls_;
+  std::vector<int> outflow_groups_;
+  std::unique_ptr<RunOutput> output_;
+
+  double time_ = 0.0;  // [s]
+  long step_count_ = 0;
+  double next_output_ = 0.0;  // [s]
+  IntegrationStats integration_totals_;
+  StageTimer timer_;
+};
+
+}  // namespace flotsam
