@@ -1,0 +1,129 @@
+// Tests of the coupled run (src/coupling/simulation.cpp) on a straight frictionless channel whose
+// steady flow is exactly uniform: u = Q / (W H0), eta = H0.
+#include "coupling/simulation.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double length = 200.0;  // [m]
+constexpr double width = 20.0;    // [m]
+constexpr double H0 = 2.0;        // [m]
+constexpr double Q = 40.0;        // [m^3/s]: U = Q / (W H0) = 1 m/s
+constexpr double U = Q / (width * H0);
+
+Mesh channel_mesh() {
+  return make_rectangle_mesh({.length = length, .width = width, .nx = 20, .ny = 4});
+}
+
+Case channel_case(CouplingMode mode) {
+  Case c;
+  c.name = "channel";
+  c.flow.viscosity = 1e-6;
+  c.flow.initial_eta_start = c.flow.initial_eta_end = H0;
+  c.flow.boundaries = {
+      {BoundaryCondition::Kind::discharge, "left", TimeSeries(Q), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::elevation, "right", TimeSeries(H0), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
+  c.time.mode = mode;
+  c.time.step = 1.0;
+  c.time.end = 60.0;
+  c.bodies.physics.drag_law = DragLaw::constant;
+  c.bodies.physics.drag_coefficient = 1.0;
+  BodySpec log;
+  log.length = 4.0;
+  log.width = 0.4;
+  log.position = Vec2(30.0, 10.0);
+  log.angle = pi / 2;  // broadside
+  c.bodies.bodies = {log};
+  return c;
+}
+
+RunOptions quiet() {
+  return {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false};
+}
+
+TEST(Simulation, FrozenFlowCarriesALogDownstreamAtTheFlowSpeed) {
+  Simulation s(channel_case(CouplingMode::frozen), channel_mesh(), quiet());
+  s.run();
+  // The steady flow is uniform (frictionless, discharge in, elevation out).
+  for (int n = 0; n < s.flow().mesh().node_count(); ++n) {
+    ASSERT_NEAR(s.flow().u()[n], U, 1e-6 * U) << "node " << n;
+    ASSERT_NEAR(s.flow().v()[n], 0.0, 1e-6 * U) << "node " << n;
+  }
+  // A broadside log released at rest relaxes to U: du/dt = k (U - u)^2 gives U - u = U / (1 +
+  // k U t); after 60 s it is within a few percent and has moved downstream.
+  const BodySet& b = s.bodies();
+  EXPECT_GT(b.velocity[0].x(), 0.95 * U);
+  EXPECT_LT(b.velocity[0].x(), U * (1 + 1e-9));
+  EXPECT_NEAR(b.velocity[0].y(), 0.0, 1e-9);
+  EXPECT_GT(b.position[0].x(), 30.0 + 0.8 * U * 60.0);
+  EXPECT_NEAR(b.position[0].y(), 10.0, 1e-9);
+}
+
+TEST(Simulation, ALogReachingTheOutflowLeavesAndIsCounted) {
+  Case c = channel_case(CouplingMode::frozen);
+  c.bodies.bodies[0].position = Vec2(190.0, 10.0);
+  c.bodies.bodies[0].velocity = Vec2(U, 0.0);
+  Simulation s(std::move(c), channel_mesh(), quiet());
+  s.run();
+  EXPECT_EQ(s.bodies().outflow_count, 1);
+  EXPECT_EQ(s.bodies().state[0], BodyState::gone);
+}
+
+TEST(Simulation, TwoWayRunKeepsTheWaterBalance) {
+  Case c = channel_case(CouplingMode::two_way);
+  c.time.end = 20.0;
+  Simulation s(std::move(c), channel_mesh(), quiet());
+  s.run();
+  EXPECT_LT(std::abs(s.flow().water_balance().relative_error()), 1e-9);
+  EXPECT_GT(s.bodies().position[0].x(), 30.0);
+}
+
+TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
+  const auto dir = std::filesystem::temp_directory_path() / "flotsam_simulation_test";
+  std::filesystem::remove_all(dir);
+  Case c = channel_case(CouplingMode::frozen);
+  c.time.end = 10.0;
+  c.output.interval = 4.0;  // outputs at 0, 4, 8 and the end, 10
+  {
+    Simulation s(
+        c, channel_mesh(),
+        {.output_directory = dir, .overwrite = false, .write_output = true, .progress = false});
+    s.run();
+  }
+  int vtu = 0, vtp = 0;
+  for (const auto& f : std::filesystem::directory_iterator(dir)) {
+    vtu += f.path().extension() == ".vtu";
+    vtp += f.path().extension() == ".vtp" && f.path().stem().string().starts_with("bodies_");
+  }
+  EXPECT_EQ(vtu, 4);
+  EXPECT_EQ(vtp, 4);
+  std::ifstream csv(dir / "channel_bodies.csv");
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 4);  // header + one body at four times
+  Simulation again(
+      c, channel_mesh(),
+      {.output_directory = dir, .overwrite = false, .write_output = true, .progress = false});
+  try {
+    again.initialize();
+    FAIL() << "an existing output folder was overwritten without --overwrite";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("exists and is not empty"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace flotsam
