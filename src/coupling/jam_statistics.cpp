@@ -1,0 +1,442 @@
+#include "coupling/jam_statistics.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace flotsam {
+
+// ---- geometry -------------------------------------------------------------------------------
+
+namespace {
+
+int require_group(const std::vector<std::string>& group_names, const std::string& name,
+                  const std::string& source) {
+  const auto it = std::find(group_names.begin(), group_names.end(), name);
+  if (it == group_names.end())
+    throw_input_error("{}: the channel's boundary group '{}' is missing from the mesh (it has: {})",
+                      source, name, fmt::join(group_names, ", "));
+  return static_cast<int>(it - group_names.begin());
+}
+
+/// Groups pier indices (into `piers`) into lines across the channel: sorted by centre x, a pier
+/// joins the line of the previous one when their x differ by less than the smaller radius.
+std::vector<std::vector<int>> group_into_lines(const std::vector<Pier>& piers) {
+  std::vector<int> order(piers.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return piers[a].centre.x() < piers[b].centre.x(); });
+  std::vector<std::vector<int>> lines;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Pier& p = piers[order[k]];
+    const Pier* previous = k > 0 ? &piers[order[k - 1]] : nullptr;
+    if (previous == nullptr ||
+        p.centre.x() - previous->centre.x() >= std::min(p.radius, previous->radius))
+      lines.emplace_back();
+    lines.back().push_back(order[k]);
+  }
+  return lines;
+}
+
+/// The free gaps of one line: the obstacles bank_right (y <= y_lower), the piers' y-intervals
+/// [y_c - r, y_c + r] and bank_left (y >= y_upper), walked by y; overlapping obstacles leave no
+/// gap between them.
+std::vector<Gap> line_gaps(const std::vector<Pier>& piers, std::vector<int>& line,
+                           const JamGeometry& g, int right_bank, int left_bank,
+                           const std::vector<int>& pier_solid) {
+  std::sort(line.begin(), line.end(),
+            [&](int a, int b) { return piers[a].centre.y() < piers[b].centre.y(); });
+  std::vector<Gap> gaps;
+  double cursor = g.y_lower;  // [m] upper end of the obstacles so far
+  int cursor_solid = right_bank;
+  for (const int p : line) {
+    const double lower = piers[p].centre.y() - piers[p].radius;
+    const double upper = piers[p].centre.y() + piers[p].radius;
+    if (lower > cursor) gaps.push_back({cursor, lower, cursor_solid, pier_solid[p]});
+    if (upper >= cursor) {
+      cursor = upper;
+      cursor_solid = pier_solid[p];
+    }
+  }
+  if (g.y_upper > cursor) gaps.push_back({cursor, g.y_upper, cursor_solid, left_bank});
+  return gaps;
+}
+
+SolidKind kind_from_name(const std::string& name) {
+  if (name.starts_with("pier")) return SolidKind::pier;
+  if (name.starts_with("bank")) return SolidKind::bank;
+  return SolidKind::wall;
+}
+
+}  // namespace
+
+JamGeometry jam_geometry_from_channel(const ChannelGeometry& channel,
+                                      const std::vector<std::string>& group_names,
+                                      const std::string& source) {
+  JamGeometry g;
+  g.group_names = group_names;
+  g.y_lower = 0.0;
+  g.y_upper = channel.width;
+  const int right_bank = 0, left_bank = 1;
+  for (const char* bank : {"bank_right", "bank_left"})
+    g.solids.push_back({require_group(group_names, bank, source), bank, SolidKind::bank, -1});
+  std::vector<int> pier_solid(channel.piers.size());
+  for (std::size_t p = 0; p < channel.piers.size(); ++p) {
+    const std::string name = fmt::format("pier_{}", p + 1);
+    pier_solid[p] = static_cast<int>(g.solids.size());
+    g.solids.push_back({require_group(group_names, name, source), name, SolidKind::pier, -1});
+  }
+  for (std::vector<int>& line : group_into_lines(channel.piers)) {
+    BridgeLine bridge;
+    bridge.name = fmt::format("bridge_{}", g.bridges.size() + 1);
+    for (const int p : line) {
+      bridge.x += channel.piers[p].centre.x() / static_cast<double>(line.size());
+      bridge.max_radius = std::max(bridge.max_radius, channel.piers[p].radius);
+    }
+    bridge.gaps = line_gaps(channel.piers, line, g, right_bank, left_bank, pier_solid);
+    for (const int p : line) {
+      bridge.piers.push_back(pier_solid[p]);
+      g.solids[pier_solid[p]].bridge = static_cast<int>(g.bridges.size());
+    }
+    g.bridges.push_back(std::move(bridge));
+  }
+  return g;
+}
+
+JamGeometry jam_geometry_from_channel(const ChannelGeometry& channel, const Mesh& mesh) {
+  return jam_geometry_from_channel(channel, mesh.group_names, mesh.source);
+}
+
+JamGeometry jam_geometry_from_groups(const Mesh& mesh, const std::vector<int>& solid_groups) {
+  JamGeometry g;
+  g.group_names = mesh.group_names;
+  for (const int group : solid_groups) {
+    const std::string& name = mesh.group_names.at(static_cast<std::size_t>(group));
+    g.solids.push_back({group, name, kind_from_name(name), -1});
+  }
+  return g;
+}
+
+JamGeometry jam_geometry_for(const MeshSource& source, const Mesh& mesh,
+                             const std::vector<int>& solid_groups) {
+  if (source.kind == MeshSource::Kind::channel)
+    return jam_geometry_from_channel(source.channel, mesh);
+  return jam_geometry_from_groups(mesh, solid_groups);
+}
+
+// ---- statistics -----------------------------------------------------------------------------
+
+int JamStatistics::largest_jam() const {
+  int largest = 0;
+  for (const Jam& jam : jams) largest = std::max(largest, jam.body_count());
+  return largest;
+}
+
+Vec2 footprint_half_extent(const BodySet& bodies, int i) {
+  // The rectangle's corners are G +- (L/2) a +- (l/2) perp(a), a = (cos theta, sin theta):
+  // their largest |x - x_G| is (L/2)|cos| + (l/2)|sin|, their largest |y - y_G| is
+  // (L/2)|sin| + (l/2)|cos|.
+  const double c = std::abs(std::cos(bodies.angle[i])), s = std::abs(std::sin(bodies.angle[i]));
+  const Vec2 h = bodies.half_extents(i);
+  return {h.x() * c + h.y() * s, h.x() * s + h.y() * c};
+}
+
+double covered_length(std::vector<std::pair<double, double>> intervals, double lower,
+                      double upper) {
+  // Clip to [lower, upper], sort by start, merge overlapping runs and add their lengths.
+  for (auto& [lo, hi] : intervals) {
+    lo = std::max(lo, lower);
+    hi = std::min(hi, upper);
+  }
+  std::erase_if(intervals, [](const auto& iv) { return iv.second <= iv.first; });
+  std::sort(intervals.begin(), intervals.end());
+  double covered = 0.0;  // [m]
+  double run_lo = 0.0, run_hi = 0.0;
+  bool in_run = false;
+  for (const auto& [lo, hi] : intervals) {
+    if (in_run && lo <= run_hi) {
+      run_hi = std::max(run_hi, hi);
+      continue;
+    }
+    if (in_run) covered += run_hi - run_lo;
+    run_lo = lo;
+    run_hi = hi;
+    in_run = true;
+  }
+  if (in_run) covered += run_hi - run_lo;
+  return covered;
+}
+
+namespace {
+
+/// Union-find roots of the body-body contact graph, ignoring gone bodies.
+std::vector<int> cluster_roots(const BodySet& bodies, const ContactReport& report) {
+  const int n = bodies.size();
+  std::vector<int> parent(static_cast<std::size_t>(n));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& [a, b] : report.body_body) {
+    if (bodies.state[a] == BodyState::gone || bodies.state[b] == BodyState::gone) continue;
+    parent[root(a)] = root(b);
+  }
+  for (int i = 0; i < n; ++i) parent[i] = root(i);
+  return parent;
+}
+
+/// The bridge a jam sits at: the one of its anchoring piers (the nearest to the jam's mean x
+/// when they belong to several); without a pier anchor, the bridge whose pier band
+/// [x - r_max, x + r_max] meets the jam's footprint x-extent (nearest when several); else -1.
+int bridge_of(const Jam& jam, const BodySet& bodies, const JamGeometry& geometry,
+              const std::vector<int>& solid_of_group) {
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  double mean_x = 0.0, lo = infinity, hi = -infinity;  // [m]
+  for (const int i : jam.bodies) {
+    mean_x += bodies.position[i].x() / static_cast<double>(jam.bodies.size());
+    const double h = footprint_half_extent(bodies, i).x();
+    lo = std::min(lo, bodies.position[i].x() - h);
+    hi = std::max(hi, bodies.position[i].x() + h);
+  }
+  std::vector<int> candidates;
+  for (const int group : jam.anchors) {
+    const int s = group < static_cast<int>(solid_of_group.size()) ? solid_of_group[group] : -1;
+    if (s >= 0 && geometry.solids[s].bridge >= 0) candidates.push_back(geometry.solids[s].bridge);
+  }
+  if (candidates.empty()) {
+    for (int b = 0; b < static_cast<int>(geometry.bridges.size()); ++b) {
+      const BridgeLine& line = geometry.bridges[b];
+      if (lo <= line.x + line.max_radius && hi >= line.x - line.max_radius) candidates.push_back(b);
+    }
+  }
+  int best = -1;
+  for (const int b : candidates) {
+    if (best < 0 ||
+        std::abs(geometry.bridges[b].x - mean_x) < std::abs(geometry.bridges[best].x - mean_x))
+      best = b;
+  }
+  return best;
+}
+
+/// The y-intervals of the footprints of `members` [m].
+std::vector<std::pair<double, double>> y_spans(const BodySet& bodies,
+                                               const std::vector<int>& members) {
+  std::vector<std::pair<double, double>> spans;
+  for (const int i : members) {
+    const double h = footprint_half_extent(bodies, i).y();
+    spans.emplace_back(bodies.position[i].y() - h, bodies.position[i].y() + h);
+  }
+  return spans;
+}
+
+/// Fills each jam's bridge and gap blockage, and each bridge's total blockage: the union of the
+/// y-spans of the footprints of its jams' bodies, clipped to each gap, summed over the gaps and
+/// divided by the sum of the gap widths.
+void measure_blockage(JamStatistics& stats, const BodySet& bodies, const JamGeometry& geometry,
+                      const std::vector<int>& solid_of_group) {
+  std::vector<std::vector<std::pair<double, double>>> bridge_spans(geometry.bridges.size());
+  for (Jam& jam : stats.jams) {
+    jam.bridge = bridge_of(jam, bodies, geometry, solid_of_group);
+    if (jam.bridge < 0) continue;
+    const auto spans = y_spans(bodies, jam.bodies);
+    for (const Gap& gap : geometry.bridges[jam.bridge].gaps)
+      jam.gap_blockage.push_back(covered_length(spans, gap.y_lower, gap.y_upper) / gap.width());
+    auto& all = bridge_spans[jam.bridge];
+    all.insert(all.end(), spans.begin(), spans.end());
+  }
+  for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
+    double covered = 0.0, total = 0.0;  // [m]
+    for (const Gap& gap : geometry.bridges[b].gaps) {
+      covered += covered_length(bridge_spans[b], gap.y_lower, gap.y_upper);
+      total += gap.width();
+    }
+    stats.bridge_blockage.push_back(total > 0.0 ? covered / total : 0.0);
+  }
+}
+
+/// released, passed, left, trapped, deposited, floating (docs/model.md, "Fate of the bodies").
+void count_fates(JamStatistics& stats, const BodySet& bodies, const JamGeometry& geometry,
+                 const std::vector<char>& in_jam) {
+  stats.released = bodies.size();
+  stats.left = static_cast<int>(bodies.outflow_count);
+  for (int i = 0; i < bodies.size(); ++i) {
+    const bool gone = bodies.state[i] == BodyState::gone;
+    const bool beyond =
+        geometry.bridges.empty() ? gone : bodies.position[i].x() > geometry.passed_x();
+    stats.passed += !in_jam[i] && beyond;
+    if (gone) continue;
+    if (in_jam[i])
+      ++stats.trapped;
+    else if (bodies.state[i] == BodyState::grounded)
+      ++stats.deposited;
+    else
+      ++stats.floating;
+  }
+}
+
+}  // namespace
+
+JamStatistics compute_jam_statistics(const BodySet& bodies, const ContactReport& report,
+                                     const JamGeometry& geometry) {
+  const int n = bodies.size();
+  if (report.body_count > n)
+    throw std::invalid_argument(fmt::format(
+        "compute_jam_statistics: contact report of {} bodies for {} bodies", report.body_count, n));
+  for (const auto& [a, b] : report.body_body)
+    if (a < 0 || b >= n || a >= n || b < 0)
+      throw std::invalid_argument(
+          fmt::format("compute_jam_statistics: pair ({}, {}) of {} bodies", a, b, n));
+
+  std::vector<int> solid_of_group(geometry.group_names.size(), -1);
+  for (std::size_t s = 0; s < geometry.solids.size(); ++s)
+    solid_of_group.at(static_cast<std::size_t>(geometry.solids[s].group)) = static_cast<int>(s);
+
+  JamStatistics stats;
+  stats.touching.assign(geometry.solids.size(), 0);
+  stats.anchored.assign(geometry.solids.size(), 0);
+
+  // Clusters of the body-body contact graph; a cluster is a jam when one of its bodies touches
+  // a solid group. Jams are indexed by their root in the order of their smallest body.
+  const std::vector<int> root = cluster_roots(bodies, report);
+  std::vector<int> jam_of_root(static_cast<std::size_t>(n), -1);
+  std::vector<std::vector<int>> anchors_of_root(static_cast<std::size_t>(n));
+  for (const auto& [body, group] : report.body_group) {
+    if (body < 0 || body >= n)
+      throw std::invalid_argument(fmt::format("compute_jam_statistics: body {} of {}", body, n));
+    if (bodies.state[body] == BodyState::gone) continue;
+    anchors_of_root[root[body]].push_back(group);
+    const int s = group < static_cast<int>(solid_of_group.size()) ? solid_of_group[group] : -1;
+    if (s >= 0) ++stats.touching[s];
+  }
+  for (int i = 0; i < n; ++i) {
+    auto& anchors = anchors_of_root[root[i]];
+    if (anchors.empty()) continue;
+    int& jam = jam_of_root[root[i]];
+    if (jam < 0) {
+      jam = static_cast<int>(stats.jams.size());
+      std::sort(anchors.begin(), anchors.end());
+      anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
+      stats.jams.push_back({.bodies = {}, .anchors = anchors, .bridge = -1, .gap_blockage = {}});
+    }
+    stats.jams[jam].bodies.push_back(i);
+  }
+  for (const Jam& jam : stats.jams)
+    for (const int group : jam.anchors) {
+      const int s = group < static_cast<int>(solid_of_group.size()) ? solid_of_group[group] : -1;
+      if (s >= 0) stats.anchored[s] += jam.body_count();
+    }
+  measure_blockage(stats, bodies, geometry, solid_of_group);
+
+  std::vector<char> in_jam(static_cast<std::size_t>(n), 0);
+  for (const Jam& jam : stats.jams)
+    for (const int i : jam.bodies) in_jam[i] = 1;
+  count_fates(stats, bodies, geometry, in_jam);
+  return stats;
+}
+
+// ---- output ---------------------------------------------------------------------------------
+
+std::vector<std::string> JamStatisticsWriter::columns(const JamGeometry& geometry,
+                                                      bool with_backwater) {
+  std::vector<std::string> names = {"time [s]",  "released", "passed", "left",       "trapped",
+                                    "deposited", "floating", "jams",   "largest jam"};
+  for (const BridgeLine& b : geometry.bridges) names.push_back("blockage " + b.name + " [-]");
+  if (with_backwater)
+    for (const BridgeLine& b : geometry.bridges)
+      names.push_back("backwater rise " + b.name + " [m]");
+  for (const SolidGroup& s : geometry.solids) names.push_back("touching " + s.name);
+  for (const SolidGroup& s : geometry.solids) names.push_back("anchored " + s.name);
+  return names;
+}
+
+JamStatisticsWriter::JamStatisticsWriter(const std::string& path, const JamGeometry& geometry,
+                                         bool with_backwater)
+    : csv_(path, columns(geometry, with_backwater)),
+      with_backwater_(with_backwater),
+      bridge_count_(geometry.bridges.size()) {}
+
+void JamStatisticsWriter::write(double t, const JamStatistics& s,
+                                std::span<const double> backwater_rise) {
+  const std::size_t expected = with_backwater_ ? bridge_count_ : 0;
+  if (backwater_rise.size() != expected || s.bridge_blockage.size() != bridge_count_)
+    throw std::invalid_argument(
+        fmt::format("JamStatisticsWriter '{}': {} backwater values and {} blockages for {} "
+                    "bridges (backwater columns: {})",
+                    csv_.path(), backwater_rise.size(), s.bridge_blockage.size(), bridge_count_,
+                    with_backwater_));
+  std::vector<double> row = {t,
+                             double(s.released),
+                             double(s.passed),
+                             double(s.left),
+                             double(s.trapped),
+                             double(s.deposited),
+                             double(s.floating),
+                             double(s.jams.size()),
+                             double(s.largest_jam())};
+  row.insert(row.end(), s.bridge_blockage.begin(), s.bridge_blockage.end());
+  row.insert(row.end(), backwater_rise.begin(), backwater_rise.end());
+  for (const int c : s.touching) row.push_back(c);
+  for (const int c : s.anchored) row.push_back(c);
+  csv_.row(row);
+}
+
+namespace {
+
+template <class... Args>
+void append_line(fmt::memory_buffer& out, fmt::format_string<Args...> format, Args&&... args) {
+  fmt::format_to(std::back_inserter(out), format, std::forward<Args>(args)...);
+  out.push_back('\n');
+}
+
+}  // namespace
+
+std::string format_jam_summary(const JamStatistics& s, const JamGeometry& geometry,
+                               std::span<const double> backwater_rise) {
+  fmt::memory_buffer out;
+  append_line(out, "bodies: {} released, {} passed, {} left, {} trapped, {} deposited, {} floating",
+              s.released, s.passed, s.left, s.trapped, s.deposited, s.floating);
+  if (!geometry.bridges.empty()) {
+    append_line(out, "  {:<10} {:>8} {:>5} {:>9}{}", "bridge", "x [m]", "gaps", "blockage",
+                backwater_rise.empty() ? "" : "  backwater rise [m]");
+    for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
+      const BridgeLine& bridge = geometry.bridges[b];
+      const std::string rise =
+          b < backwater_rise.size() ? fmt::format("  {:>18.4f}", backwater_rise[b]) : "";
+      append_line(out, "  {:<10} {:>8.1f} {:>5} {:>9.3f}{}", bridge.name, bridge.x,
+                  bridge.gaps.size(), s.bridge_blockage.at(b), rise);
+    }
+  }
+  append_line(out, "  {} jam{}, largest {} bodies", s.jams.size(), s.jams.size() == 1 ? "" : "s",
+              s.largest_jam());
+  if (!s.jams.empty()) {
+    append_line(out, "  {:<4} {:>6}  {:<24} {:<10} {}", "jam", "bodies", "anchored on", "bridge",
+                "gap blockage");
+    for (std::size_t j = 0; j < s.jams.size(); ++j) {
+      const Jam& jam = s.jams[j];
+      std::vector<std::string> anchors;
+      for (const int g : jam.anchors) anchors.push_back(geometry.group_names.at(g));
+      append_line(out, "  {:<4} {:>6}  {:<24} {:<10} {}", j + 1, jam.body_count(),
+                  fmt::format("{}", fmt::join(anchors, ", ")),
+                  jam.bridge >= 0 ? geometry.bridges[jam.bridge].name : std::string("-"),
+                  fmt::format("{:.3f}", fmt::join(jam.gap_blockage, " ")));
+    }
+  }
+  if (!geometry.solids.empty()) {
+    append_line(out, "  {:<12} {:>8} {:>8}", "group", "touching", "anchored");
+    for (std::size_t k = 0; k < geometry.solids.size(); ++k)
+      append_line(out, "  {:<12} {:>8} {:>8}", geometry.solids[k].name, s.touching[k],
+                  s.anchored[k]);
+  }
+  return fmt::to_string(out);
+}
+
+}  // namespace flotsam
