@@ -75,3 +75,15 @@ void RunOutput::write_bodies(const BodySet& bodies, double t) {
 }
 
 }  // namespace flotsam
+
+namespace flotsam {
+
+void RunOutput::write_jams(double t, const JamStatistics& stats, const JamGeometry& geometry,
+                           const std::vector<double>& rise, bool with_backwater) {
+  if (!jams_)
+    jams_ = std::make_unique<JamStatisticsWriter>((directory_ / (name_ + "_jams.csv")).string(),
+                                                  geometry, with_backwater);
+  jams_->write(t, stats, rise);
+}
+
+}  // namespace flotsam

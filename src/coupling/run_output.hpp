@@ -5,11 +5,13 @@
 //   boundary.vtp                          the boundary with its groups, once
 //   <name>_bodies.csv                     every body at every output time (trajectories)
 //   <name>_balance.csv                    water volume balance at every output time
+//   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
 #include <filesystem>
 #include <memory>
 #include <string>
 
 #include "bodies/body_set.hpp"
+#include "coupling/jam_statistics.hpp"
 #include "flow/shallow_water_solver.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
@@ -25,6 +27,10 @@ class RunOutput {
   /// Writes output number `index_` at the solver's current time.
   void write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies);
 
+  /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
+  void write_jams(double t, const JamStatistics& stats, const JamGeometry& geometry,
+                  const std::vector<double>& rise, bool with_backwater);
+
   const std::filesystem::path& directory() const { return directory_; }
   int count() const { return index_; }
 
@@ -37,6 +43,7 @@ class RunOutput {
   int index_ = 0;
   PvdWriter flow_index_, body_index_;
   std::unique_ptr<CsvWriter> trajectories_, balance_;
+  std::unique_ptr<JamStatisticsWriter> jams_;
 };
 
 }  // namespace flotsam

@@ -53,7 +53,15 @@ void Simulation::initialize() {
         std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
     contacts_ = std::make_unique<ContactWorld>(case_.bodies.contact,
                                                case_.bodies.physics.added_mass_coefficient);
-    walls_ = extract_boundary_segments(mesh_, solid_group_indices(mesh_, case_.flow.boundaries));
+    const std::vector<int> solids = solid_group_indices(mesh_, case_.flow.boundaries);
+    walls_ = extract_boundary_segments(mesh_, solids);
+    jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids);
+    if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
+        !jam_geometry_.bridges.empty()) {
+      reference_flow_ = std::make_unique<ShallowWaterSolver>(mesh_, case_);
+      reference_flow_->initialize();
+      backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
+    }
   }
   if (options_.write_output) {
     const auto dir = options_.output_directory.empty()
@@ -88,6 +96,7 @@ void Simulation::advance_flow(double t1) {
   auto timed = timer_.time(Stage::flow);
   if (case_.time.mode == CouplingMode::frozen) return;  // the steady flow stays
   flow_->step(t1 - flow_->time());
+  if (reference_flow_) reference_flow_->step(t1 - reference_flow_->time());
 }
 
 void Simulation::advance_bodies(double t0, double t1) {
@@ -149,6 +158,9 @@ void Simulation::write_output_if_due(bool force) {
   if (!force && time_ < next_output_ - 1e-9 * case_.time.step) return;
   auto timed = timer_.time(Stage::output);
   output_->write(*flow_, bodies_, has_bodies_);
+  if (has_bodies_)
+    output_->write_jams(time_, jam_statistics(), jam_geometry_, backwater_rise(),
+                        reference_flow_ != nullptr);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
 }
 
@@ -168,6 +180,15 @@ void Simulation::run() {
   progress.finish();
   if (output_ && output_->count() > 0 && next_output_ - case_.output.interval < time_ - 1e-9)
     write_output_if_due(true);  // the final state, when the last interval was not complete
+}
+
+JamStatistics Simulation::jam_statistics() const {
+  return compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
+}
+
+std::vector<double> Simulation::backwater_rise() const {
+  if (!reference_flow_) return {};
+  return backwater_probe_->rise(flow_->eta(), reference_flow_->eta());
 }
 
 std::string Simulation::summary() const {
@@ -191,6 +212,7 @@ std::string Simulation::summary() const {
                      bodies_.size(), floating, grounded, bodies_.outflow_count);
     s += fmt::format("RKF45 sub-steps  {} accepted, {} rejected\n", integration_totals_.accepted,
                      integration_totals_.rejected);
+    s += format_jam_summary(jam_statistics(), jam_geometry_, backwater_rise());
   }
   s += "wall time       ";
   for (int k = 0; k < static_cast<int>(Stage::count); ++k)

@@ -19,6 +19,8 @@
 #include "bodies/release.hpp"
 #include "contact/boundary_segments.hpp"
 #include "contact/contact_world.hpp"
+#include "coupling/backwater.hpp"
+#include "coupling/jam_statistics.hpp"
 #include "coupling/run_output.hpp"
 #include "coupling/stage_timer.hpp"
 #include "flow/fem_flow_field.hpp"
@@ -58,6 +60,12 @@ class Simulation {
   const StageTimer& timer() const { return timer_; }
   const Case& run_case() const { return case_; }
   bool has_bodies() const { return has_bodies_; }
+  /// Jam statistics of the current state (spec 6.3); bodies only.
+  JamStatistics jam_statistics() const;
+  /// Water-surface rise upstream of each bridge against the reference flow without bodies
+  /// (output.backwater in two-way runs); empty without a reference flow.
+  std::vector<double> backwater_rise() const;
+  const ShallowWaterSolver* reference_flow() const { return reference_flow_.get(); }
 
  private:
   void advance_flow(double t1);
@@ -72,6 +80,7 @@ class Simulation {
   bool has_bodies_ = false;
 
   std::unique_ptr<ShallowWaterSolver> flow_;
+  std::unique_ptr<ShallowWaterSolver> reference_flow_;  // the same flow without bodies
   std::unique_ptr<FemFlowField> flow_field_;
   BodySet bodies_;
   std::unique_ptr<BodyIntegrator> integrator_;
@@ -79,6 +88,8 @@ class Simulation {
   std::unique_ptr<ContactWorld> contacts_;
   BoundarySegments walls_;
   std::vector<int> outflow_groups_;
+  JamGeometry jam_geometry_;
+  std::unique_ptr<BackwaterProbe> backwater_probe_;
   std::unique_ptr<RunOutput> output_;
 
   double time_ = 0.0;  // [s]

@@ -89,8 +89,8 @@ struct ContactConfig {
   int iterations = 20;  // impulse sweeps per contact solve
   // Contact solver settings (src/contact, docs/model.md "Contacts").
   double restitution_threshold = 0.01;  // [m/s] slower approaches do not bounce (resting contact)
-  double velocity_tolerance = 1e-6;  // [m/s] sweeps stop when no point's velocity changes more
-  int position_iterations = 10;      // position-correction sweeps (at most)
+  double velocity_tolerance = 1e-6;     // [m/s] sweeps stop when no point's velocity changes more
+  int position_iterations = 10;         // position-correction sweeps (at most)
   double allowed_overlap = 0.005;  // [-] overlap left uncorrected, fraction of the thinner width
 };
 
@@ -121,6 +121,9 @@ struct OutputConfig {
   std::string directory = "out";  // relative to the working directory
   double interval = 60.0;         // [s] between field outputs
   bool overwrite = false;         // replace an existing output folder (else: error)
+  bool backwater = false;  // run a reference flow without bodies alongside (two-way), for the
+                           // water-surface rise upstream of each bridge (spec 6.3); doubles the
+                           // flow's cost
 };
 
 struct Case {

@@ -170,6 +170,7 @@ OutputConfig read_output(const YamlMap& m) {
   }
   output.interval = m.number("interval", output.interval, Range::positive());
   output.overwrite = m.boolean("overwrite", output.overwrite);
+  output.backwater = m.boolean("backwater", output.backwater);
   return output;
 }
 

@@ -28,6 +28,7 @@ Mesh channel_mesh() {
 Case channel_case(CouplingMode mode) {
   Case c;
   c.name = "channel";
+  c.mesh.kind = MeshSource::Kind::file;  // the mesh is given in memory: no channel geometry
   c.flow.viscosity = 1e-6;
   c.flow.initial_eta_start = c.flow.initial_eta_end = H0;
   c.flow.boundaries = {
