@@ -123,8 +123,13 @@ std::vector<int> solid_group_indices(const Mesh& mesh,
     }
     const int g = mesh.find_group(bc.group);
     if (g < 0) {
-      throw_input_error("{}: boundary condition for group '{}': the mesh has no such group",
-                        mesh.source, bc.group);
+      std::string known;  // the mesh's groups, for the message
+      for (const std::string& name : mesh.group_names)
+        known += (known.empty() ? "'" : ", '") + name + "'";
+      throw_input_error(
+          "boundary condition for group '{}' (case line {}): mesh {} has no such group; its "
+          "boundary groups are {}",
+          bc.group, bc.line, mesh.source, known.empty() ? std::string("none") : known);
     }
     groups.push_back(g);
   }

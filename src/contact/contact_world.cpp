@@ -1,6 +1,8 @@
 #include "contact/contact_world.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <tuple>
@@ -55,9 +57,10 @@ Rectangle body_rectangle(const BodySet& bodies, int i) {
 ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coefficient)
     : config_(config), added_mass_coefficient_(added_mass_coefficient) {}
 
-void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double dt) {
+void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval) {
+  assert(interval >= 0.0);  // a programming error, not bad input
   detect(bodies, walls);
-  solve(bodies, dt);
+  solve(bodies, interval);
   correct_positions(bodies);
 }
 
@@ -143,45 +146,73 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   profile_.contacts = static_cast<int>(contacts_.size());
 }
 
-// Last step's accumulated impulses seed this step's, matched by (a, b, segment, feature):
-// a resting jam then needs few sweeps.
-void ContactWorld::warm_start_from_previous() {
+// Last interval's accumulated impulses seed this one's (warm start): a resting jam then needs
+// few sweeps. Manifolds are matched by (a, b, segment), their points by feature, else by
+// position: the nearest old point within a tenth of the thinner width (measured as r_A, which
+// moves by at most l/4 per interval). The feature alone is not enough: when two logs of equal
+// length lie side by side with their ends aligned, an end point flips between "incident vertex"
+// and "clipped at the side plane" from one interval to the next; losing its impulse then throws
+// the load of the whole jam behind it onto the next sweeps. A point that carried an impulse is
+// resting: restitution is not applied to it again.
+void ContactWorld::match_previous_points() {
   auto key = [](const ContactConstraint& c) { return std::tuple(c.a, c.b, c.segment); };
   std::sort(previous_.begin(), previous_.end(),
             [&](const auto& x, const auto& y) { return key(x) < key(y); });
+  profile_.points = profile_.warm_started_points = 0;
   for (ContactConstraint& c : contacts_) {
+    profile_.points += c.point_count;
     const auto it = std::lower_bound(previous_.begin(), previous_.end(), key(c),
                                      [&](const auto& x, const auto& k) { return key(x) < k; });
     if (it == previous_.end() || key(*it) != key(c)) continue;
+    std::array<bool, 2> used{false, false};
+    std::array<int, 2> match{-1, -1};
     for (int k = 0; k < c.point_count; ++k) {
-      auto& p = c.points[static_cast<std::size_t>(k)];
       for (int q = 0; q < it->point_count; ++q) {
-        const auto& old = it->points[static_cast<std::size_t>(q)];
-        if (old.feature == p.feature) {
-          p.normal_impulse = old.normal_impulse;
-          p.tangent_impulse = old.tangent_impulse;
+        if (!used[q] && it->points[q].feature == c.points[k].feature) {
+          match[k] = q, used[q] = true;
+          break;
         }
       }
+    }
+    const double tolerance = 0.1 * c.width;  // [m]
+    for (int k = 0; k < c.point_count; ++k) {
+      double nearest = tolerance;  // [m]
+      for (int q = 0; q < it->point_count && match[k] < 0; ++q) {
+        const double d = (it->points[q].r_a - c.points[k].r_a).norm();
+        if (!used[q] && d <= nearest) nearest = d, match[k] = q;
+      }
+      if (match[k] >= 0) used[match[k]] = true;
+    }
+    for (int k = 0; k < c.point_count; ++k) {
+      if (match[k] < 0) continue;
+      ContactPointConstraint& p = c.points[k];
+      const ContactPointConstraint& old = it->points[match[k]];
+      p.normal_impulse = old.normal_impulse;
+      p.tangent_impulse = old.tangent_impulse;
+      p.resting = old.normal_impulse > 0.0;
+      ++profile_.warm_started_points;
     }
   }
 }
 
-// The step that brought the bodies here moved them with their velocities before the contacts
-// acted; the impulses belong to the same step, so the poses are moved on by dt times the change
-// of velocity (x_n+1 = x_n + dt u_n+1, semi-implicit Euler). A resting jam pushed by a steady
-// force then does not creep into its supports by F dt^2 / m per step.
-void ContactWorld::solve(BodySet& bodies, double dt) {
+// The interval that brought the bodies here moved them with their velocities before the
+// contacts acted; the impulses belong to the same interval, so the poses are moved on by h times
+// the change of velocity (x_n+1 = x_n + h u_n+1, semi-implicit Euler). A resting jam pushed by a
+// steady force then does not creep into its supports by F h^2 / m per interval. h must be the
+// interval the bodies have just been moved over, not a longer step: the move would otherwise
+// be too long by the ratio (and a bounce could carry a body through a wall).
+void ContactWorld::solve(BodySet& bodies, double interval) {
   Stopwatch clock;
   masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
-  prepare_contacts(contacts_, bodies, masses_, config_);
-  warm_start_from_previous();
+  match_previous_points();
+  prepare_contacts(contacts_, bodies, masses_, config_, interval);
   velocity_before_ = bodies.velocity;
   angular_velocity_before_ = bodies.angular_velocity;
   warm_start_contacts(contacts_, bodies, masses_);
   profile_.velocity_sweeps = solve_contact_velocities(contacts_, bodies, masses_, config_);
   for (int i = 0; i < bodies.size(); ++i) {
-    bodies.position[i] += dt * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] += dt * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    bodies.position[i] += interval * (bodies.velocity[i] - velocity_before_[i]);
+    bodies.angle[i] += interval * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
   }
   profile_.solve = clock.lap();
 }
@@ -197,9 +228,9 @@ ContactReport ContactWorld::report(const BoundarySegments& walls, int body_count
 }
 
 void contact_step(BodySet& bodies, const BoundarySegments& walls, const ContactConfig& config,
-                  double dt) {
+                  double interval) {
   ContactWorld world(config);
-  world.step(bodies, walls, dt);
+  world.step(bodies, walls, interval);
 }
 
 }  // namespace flotsam

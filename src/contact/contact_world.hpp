@@ -19,14 +19,16 @@
 namespace flotsam {
 
 struct ContactProfile {
-  double boxes = 0.0;         // [s] bounding boxes
-  double broad_phase = 0.0;   // [s] body pairs and body-wall candidates
-  double narrow_phase = 0.0;  // [s] manifolds
-  double solve = 0.0;         // [s] impulses
-  double positions = 0.0;     // [s] position correction
-  int body_pairs = 0;         // candidate body pairs from the broad phase
-  int wall_pairs = 0;         // candidate (body, segment) pairs
-  int contacts = 0;           // manifolds with at least one point
+  double boxes = 0.0;           // [s] bounding boxes
+  double broad_phase = 0.0;     // [s] body pairs and body-wall candidates
+  double narrow_phase = 0.0;    // [s] manifolds
+  double solve = 0.0;           // [s] impulses
+  double positions = 0.0;       // [s] position correction
+  int body_pairs = 0;           // candidate body pairs from the broad phase
+  int wall_pairs = 0;           // candidate (body, segment) pairs
+  int contacts = 0;             // manifolds with at least one point
+  int points = 0;               // contact points
+  int warm_started_points = 0;  // points matched to one of the last step's
   int velocity_sweeps = 0;
   double largest_overlap = 0.0;  // [m] after position correction
 };
@@ -38,9 +40,12 @@ class ContactWorld {
   explicit ContactWorld(const ContactConfig& config, double added_mass_coefficient = 0.5);
 
   /// Detects the contacts of the current poses and resolves them: velocities get the impulses,
-  /// poses move on by dt times the velocity change (the step just taken, dt [s], is redone with
-  /// the new velocities), then the overlap correction.
-  void step(BodySet& bodies, const BoundarySegments& walls, double dt);
+  /// poses move on by `interval` times the velocity change, then the overlap correction.
+  /// `interval` h [s] is the time the bodies have just been moved over since the last call (one
+  /// contact interval of BodyIntegrator::advance, not the whole flow step): the move redoes that
+  /// interval with the new velocities, and gaps may close within the next h (speculative
+  /// contact). h >= 0.
+  void step(BodySet& bodies, const BoundarySegments& walls, double interval);
 
   /// Detection alone (boxes, broad phase, narrow phase): fills contacts().
   void detect(const BodySet& bodies, const BoundarySegments& walls);
@@ -58,8 +63,8 @@ class ContactWorld {
   void update_boxes(const BodySet& bodies);
   void find_pairs(const BoundarySegments& walls);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
-  void warm_start_from_previous();
-  void solve(BodySet& bodies, double dt);
+  void match_previous_points();
+  void solve(BodySet& bodies, double interval);
   void correct_positions(BodySet& bodies);
 
   ContactConfig config_;
@@ -72,7 +77,7 @@ class ContactWorld {
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
   SolverMasses masses_;
-  std::vector<Vec2> velocity_before_;  // [m/s]
+  std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
   std::vector<int> found_, stamp_;
   int stamp_value_ = 0;
@@ -81,7 +86,7 @@ class ContactWorld {
 
 /// One stateless contact solve (no warm start): for callers that keep no world.
 void contact_step(BodySet& bodies, const BoundarySegments& walls, const ContactConfig& config,
-                  double dt);
+                  double interval);
 
 /// The footprint of body i.
 Rectangle body_rectangle(const BodySet& bodies, int i);

@@ -124,7 +124,7 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
 }
 
 void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config) {
+                      const SolverMasses& masses, const ContactConfig& config, double interval) {
   for (ContactConstraint& c : contacts) {
     const Vec2 tangent = -perp(c.normal);
     for (int k = 0; k < c.point_count; ++k) {
@@ -132,10 +132,13 @@ void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& b
       p.normal_mass = effective_mass(masses, c, p.r_a, p.r_b, c.normal);
       p.tangent_mass = effective_mass(masses, c, p.r_a, p.r_b, tangent);
       p.approach_velocity = normal_velocity(bodies, c, p);
-      // Restitution from the velocity before the solve: v* = -e v_n^0.        (M-9)
-      p.target_velocity = p.approach_velocity < -config.restitution_threshold
-                              ? -config.restitution * p.approach_velocity
-                              : 0.0;
+      if (p.separation > 0.0) {  // a gap: may close within the interval, not faster
+        p.target_velocity = interval > 0.0 ? -p.separation / interval : 0.0;
+      } else if (!p.resting && p.approach_velocity < -config.restitution_threshold) {
+        p.target_velocity = -config.restitution * p.approach_velocity;  // v* = -e v_n^0 (M-9)
+      } else {
+        p.target_velocity = 0.0;
+      }
     }
     c.use_block = false;
     if (c.point_count == 2) {

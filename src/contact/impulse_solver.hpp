@@ -7,14 +7,23 @@
 //   v_n = [ (u_A + omega_A k x r_A) - (u_B + omega_B k x r_B) ] . n                  (M-9), (P-25)
 //   K   = 1/m_A + 1/m_B + (r_A x n)^2 / I_A + (r_B x n)^2 / I_B
 //
-// The impulse j n that brings v_n to the target v* = -e v_n^0 (v_n^0: the approach velocity
-// before the solve, when approaching faster than the restitution threshold; else 0) is
-// j = -(v_n - v*) / K; for one contact starting from v_n = v_n^0 this is (M-9)'s
-// j = -(1 + e) v_n^0 / K. With many contacts each point's j is accumulated over sweeps and the
-// running sum clamped to >= 0 (contacts push, never pull) until the normal velocities settle.
-// Two-point manifolds are solved as one 2x2 complementarity problem (block solver), so that
-// parallel logs do not converge slowly through their nearly dependent rows. Friction: the
-// tangential impulse accumulated at each point stays within +- mu_c times its normal impulse.
+// The impulse j n that brings v_n to the target v* is j = -(v_n - v*) / K. The target:
+//
+//   s > 0 (a gap, within the detection margin):  v* = -s / h   (speculative: the bodies may
+//          close the gap during the next interval h, no faster; a gap is never held open)
+//   s <= 0, a new impact approaching faster than the restitution threshold:  v* = -e v_n^0
+//   s <= 0 otherwise (resting: the point carried an impulse last interval, or a slow approach):
+//          v* = 0
+//
+// with v_n^0 the normal velocity before the solve. For one new contact starting from
+// v_n = v_n^0 this is (M-9)'s j = -(1 + e) v_n^0 / K. Restitution is never applied to a resting
+// contact, whatever e: a jam pushed by a steady drag approaches its supports by F h / m every
+// interval, and with e = 1 it would bounce off them for ever. With many contacts each point's j is
+// accumulated over sweeps and the running sum clamped to >= 0 (contacts push, never pull) until the
+// normal velocities settle. Two-point manifolds are solved as one 2x2 complementarity problem
+// (block solver), so that parallel logs do not converge slowly through their nearly dependent rows.
+// Friction: the tangential impulse accumulated at each point stays within +- mu_c times its normal
+// impulse.
 //
 // Position stage (non-linear Gauss-Seidel). The separation s of each point is re-measured from
 // the current poses; a pseudo-impulse -C/K along n, C = beta (s + slop) clamped to
@@ -40,6 +49,7 @@ struct ContactPointConstraint {
   double separation = 0.0;                      // s at detection [m]
   Vec2 local_incident = Vec2::Zero();           // incident point, incident body frame [m]
   int feature = 0;
+  bool resting = false;  // matched to a point of the last interval that carried an impulse
 };
 
 /// One manifold between body a and body b, or between body a and a wall segment (b = -1).
@@ -71,9 +81,10 @@ struct SolverMasses {
 SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
                                 double added_mass_coefficient);
 
-/// Fills r_A, r_B, the effective masses, approach and target velocities of every point.
+/// Fills the effective masses, approach and target velocities of every point; `interval` h [s]
+/// is the time over which the solved velocities will move the bodies (speculative target).
 void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config);
+                      const SolverMasses& masses, const ContactConfig& config, double interval);
 
 /// Applies the accumulated impulses the points start with (warm start from the last step).
 void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet& bodies,

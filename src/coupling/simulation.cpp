@@ -105,9 +105,11 @@ void Simulation::advance_bodies(double t0, double t1) {
     releaser_->release(bodies_, *flow_field_, t0, t1);
   }
   // RKF45 sub-steps of every body; contacts resolved at the end of each contact interval.
-  const ContactHook resolve_contacts = [this, dt = t1 - t0](double, BodySet& bodies) {
+  // The contact solve moves bodies over the interval just integrated (ContactWorld::step).
+  const ContactHook resolve_contacts = [this, last = t0](double t, BodySet& bodies) mutable {
     auto timed = timer_.time(Stage::contacts);
-    contacts_->step(bodies, walls_, dt);
+    contacts_->step(bodies, walls_, t - last);
+    last = t;
   };
   IntegrationStats stats;
   {

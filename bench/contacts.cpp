@@ -1,0 +1,112 @@
+// Contacts (spec 4.2-4.3): one contact stage (detection + impulses + position correction) per
+// step on the jam scene of the jam test (src/contact/jam_scene.hpp) scaled up to 1k, 3k and 10k
+// logs packed in rows against a line of piers, pushed downstream as in the test; and detection
+// alone, by sort-and-sweep and by brute force (all pairs), on the same poses.
+//
+//   cmake --build <build> --target bench_contacts
+//   <build>/bench/bench_contacts --benchmark_min_time=0.3
+//
+// Counters: contacts (manifolds), sweeps (velocity sweeps of the last step), and the share of
+// each stage in the step (boxes, broad, narrow, solve, positions [ms]). Figures:
+// docs/performance.md, "Contacts".
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_world.hpp"
+#include "contact/jam_scene.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double push = 0.2;     // [m s^-2] force per unit mass along +x, as the jam test
+constexpr double dt_max = 0.02;  // [s]
+
+// About 50 logs per gap between two piers, the rows packed (no free space between them).
+JamScene packed_scene(int logs) {
+  JamSceneSpec spec;
+  spec.log_count = logs;
+  spec.pier_count = std::max(2, logs / 50 + 1);
+  spec.row_gap = 0.0;
+  return make_jam_scene(spec);
+}
+
+// The jam test's step: semi-implicit Euler with the l/4 rule, then the contact stage.
+void move_bodies(BodySet& b) {
+  double dt = dt_max;
+  for (int i = 0; i < b.size(); ++i) {
+    const double speed = (b.velocity[i] + Vec2(push * dt_max, 0.0)).norm() +
+                         std::abs(b.angular_velocity[i]) * 0.5 * b.length[i];  // [m/s]
+    if (speed > 0.0) dt = std::min(dt, 0.25 * b.width[i] / speed);
+  }
+  for (int i = 0; i < b.size(); ++i) {
+    b.velocity[i].x() += push * dt;
+    b.position[i] += dt * b.velocity[i];
+    b.angle[i] += dt * b.angular_velocity[i];
+  }
+}
+
+void contact_config(ContactConfig& config) {
+  config.restitution = 0.3;
+  config.iterations = 200;
+  config.position_iterations = 20;
+}
+
+void BM_ContactStep(benchmark::State& state) {
+  JamScene scene = packed_scene(static_cast<int>(state.range(0)));
+  ContactConfig config;
+  contact_config(config);
+  ContactWorld world(config);
+  for (int k = 0; k < 20; ++k) {  // warm-up: the first contacts, the sweep order
+    move_bodies(scene.bodies);
+    world.step(scene.bodies, scene.walls, dt_max);
+  }
+  ContactProfile total;
+  for (auto _ : state) {
+    state.PauseTiming();
+    move_bodies(scene.bodies);
+    state.ResumeTiming();
+    world.step(scene.bodies, scene.walls, dt_max);
+    const ContactProfile& p = world.profile();
+    total.boxes += p.boxes, total.broad_phase += p.broad_phase;
+    total.narrow_phase += p.narrow_phase, total.solve += p.solve, total.positions += p.positions;
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["contacts"] = world.profile().contacts;
+  state.counters["sweeps"] = world.profile().velocity_sweeps;
+  state.counters["broad_ms"] = 1e3 * (total.boxes + total.broad_phase) / n;
+  state.counters["narrow_ms"] = 1e3 * total.narrow_phase / n;
+  state.counters["solve_ms"] = 1e3 * total.solve / n;
+  state.counters["positions_ms"] = 1e3 * total.positions / n;
+}
+
+void detect(benchmark::State& state, BroadPhase method) {
+  JamScene scene = packed_scene(static_cast<int>(state.range(0)));
+  ContactWorld world{ContactConfig{}};
+  world.set_broad_phase(method);
+  world.detect(scene.bodies, scene.walls);  // the sweep order
+  for (auto _ : state) {
+    world.detect(scene.bodies, scene.walls);
+    benchmark::DoNotOptimize(world.contacts().data());
+  }
+  state.counters["pairs"] = static_cast<double>(world.body_pairs().size());
+  state.counters["contacts"] = static_cast<double>(world.contacts().size());
+}
+
+void BM_DetectSweepAndPrune(benchmark::State& state) {
+  detect(state, BroadPhase::sweep_and_prune);
+}
+
+void BM_DetectBruteForce(benchmark::State& state) {
+  detect(state, BroadPhase::brute_force);
+}
+
+BENCHMARK(BM_ContactStep)->Arg(1000)->Arg(3000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DetectSweepAndPrune)->Arg(1000)->Arg(3000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DetectBruteForce)->Arg(1000)->Arg(3000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace flotsam
+
+BENCHMARK_MAIN();

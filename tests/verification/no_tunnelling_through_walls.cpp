@@ -1,0 +1,25 @@
+// Verifies that logs thrown at the banks and at a circular pier at up to 10 m/s never end up
+// across a wall when stepped with the body integrator's rule (no point moves more than l/4 per
+// contact interval): 10,000 random throws here, the full 100,000 in
+// no_tunnelling_through_walls_slow.cpp.
+// Reference: spec 4.3 and 3.5 (a body's step is short enough that it cannot cross a wall); the
+// exact answer is zero crossings. Overlaps stay under l/2 (the log's axis never reaches the
+// wall) and the position correction leaves at most 1.5 slop = 0.75% of l at the end.
+#include <gtest/gtest.h>
+
+#include "log_throws.hpp"
+
+namespace flotsam {
+namespace {
+
+TEST(NoTunnellingThroughWalls, TenThousandThrowsAtBanksAndPier) {
+  const test::ThrowStatistics s = test::throw_logs(10000, 2026);
+  EXPECT_EQ(s.throws, 10000);
+  EXPECT_EQ(s.crossings, 0);
+  EXPECT_GT(s.hits, s.throws / 2);  // most throws reach their wall: the contacts are exercised
+  EXPECT_LT(s.deepest, 0.5);        // relative to l
+  EXPECT_LT(s.deepest_end, 0.0075);
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -1,0 +1,25 @@
+// ctest-label: slow
+// Verifies that 100,000 logs thrown at the banks and at a circular pier at up to 10 m/s never end
+// up across a wall when stepped with the body integrator's rule (no point moves more than l/4
+// per contact interval). About 10 s: the default run has the 10,000-throw version
+// (no_tunnelling_through_walls.cpp).
+// Reference: spec 4.3 and 3.5; the exact answer is zero crossings.
+#include <gtest/gtest.h>
+
+#include "log_throws.hpp"
+
+namespace flotsam {
+namespace {
+
+TEST(NoTunnellingThroughWalls, HundredThousandThrowsAtBanksAndPier) {
+  const test::ThrowStatistics s = test::throw_logs(100000, 1121);
+  EXPECT_EQ(s.throws, 100000);
+  EXPECT_EQ(s.crossings, 0);
+  EXPECT_GT(s.hits, s.throws / 2);  // most throws reach their wall: the contacts are exercised
+  EXPECT_LT(s.deepest, 0.5);        // relative to l
+  EXPECT_LT(s.deepest_end, 0.0075);
+  RecordProperty("intervals", static_cast<int>(s.intervals));
+}
+
+}  // namespace
+}  // namespace flotsam
