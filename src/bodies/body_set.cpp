@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bodies/hydrodynamic_forces.hpp"
 #include "core/constants.hpp"
 
 namespace flotsam {
@@ -30,6 +31,17 @@ double floating_draft(Shape shape, double width, double height, double density,
   return 0.5 * (lo + hi);
 }
 
+double body_surface(Shape shape, double length, double width, double height) {
+  if (shape == Shape::log) return pi * width * length + 0.5 * pi * width * width;
+  return 2.0 * (length * width + length * height + width * height);
+}
+
+double BodySet::submerged_volume(int i, double depth) const {
+  const double h = std::clamp(depth, 0.0, height[i]);
+  if (shape[i] == Shape::log) return log_segment_area(width[i], h) * length[i];
+  return length[i] * width[i] * h;
+}
+
 int BodySet::add(const BodySpec& s) {
   const double b = s.shape == Shape::log ? s.width : s.height;
   const double volume = s.shape == Shape::log ? pi / 4.0 * s.width * s.width * s.length
@@ -46,6 +58,16 @@ int BodySet::add(const BodySpec& s) {
   mass.push_back(m);
   inertia.push_back(I);
   draft.push_back(floating_draft(s.shape, s.width, b, s.density, water_density));
+  // Shape factors of (P-18): the equal-volume sphere d_v = (6 V / pi)^(1/3) and the sphericity
+  // Theta = pi d_v^2 / S (surface of that sphere over the body's surface); the centre of
+  // pressure's reach at alpha = 0 (M-7).
+  const double d_v = std::cbrt(6.0 * volume / pi);
+  const double Theta = pi * d_v * d_v / body_surface(s.shape, s.length, s.width, b);
+  equal_volume_diameter.push_back(d_v);
+  sphericity.push_back(Theta);
+  ganser_K2.push_back(ganser_K2_factor(Theta));
+  ganser_K1_term.push_back(2.0 / (3.0 * std::sqrt(Theta)));
+  pressure_reach.push_back(0.1 * s.length * (1.0 - std::exp(3.0 * (1.0 - s.length / s.width))));
   id.push_back(s.id >= 0 ? s.id : next_id);
   next_id = std::max(next_id, id.back() + 1);
   position.push_back(s.position);
@@ -54,6 +76,11 @@ int BodySet::add(const BodySpec& s) {
   angular_velocity.push_back(s.angular_velocity);
   state.push_back(BodyState::floating);
   element_hint.push_back(-1);
+  step_size.push_back(0.0);
+  drag_force.push_back(Vec2::Zero());
+  bed_force.push_back(Vec2::Zero());
+  reaction_force.push_back(Vec2::Zero());
+  torque.push_back(0.0);
   return size() - 1;
 }
 

@@ -42,6 +42,13 @@ struct BodySet {
   std::vector<long> id;
   long next_id = 0;  // the id the next body without one gets
 
+  // Derived shape factors for the drag laws (cold: set once by add()).
+  std::vector<double> equal_volume_diameter;  // d_v [m], sphere of the body's volume (P-18)
+  std::vector<double> sphericity;             // Theta [-], sphere surface / body surface (P-18)
+  std::vector<double> ganser_K2;              // K2 [-], Newton-regime shape factor (P-18)
+  std::vector<double> ganser_K1_term;         // 2 / (3 sqrt(Theta)) [-], the constant of K1
+  std::vector<double> pressure_reach;         // 0.1 L (1 - exp(3 (1 - L/l))) [m], (M-7) at 0
+
   // State (hot).
   std::vector<Vec2> position;            // x_G [m]
   std::vector<double> angle;             // theta [rad]
@@ -49,6 +56,15 @@ struct BodySet {
   std::vector<double> angular_velocity;  // omega [rad/s]
   std::vector<BodyState> state;
   std::vector<int> element_hint;  // last element found for G (point location), -1 unknown
+  std::vector<double> step_size;  // RKF45 step proposed for the next sub-step [s], 0: unknown
+
+  // Forces at the start of each body's last accepted sub-step (output, two-way coupling).
+  std::vector<Vec2> drag_force;      // F_drag [N] (M-6), summed over drag points
+  std::vector<Vec2> bed_force;       // F_bed + F_slope [N] (spec 3.4), zero when floating
+  std::vector<Vec2> reaction_force;  // F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt) [N] (spec 5)
+  std::vector<double> torque;        // T_drag + T_rot + T_bed [N m] (M-5)
+
+  long outflow_count = 0;  // bodies that left through an outflow boundary (spec 5)
 
   int size() const { return static_cast<int>(position.size()); }
 
@@ -58,6 +74,9 @@ struct BodySet {
   /// Unit vector along the long axis, and the body's half extents (L/2, l/2) [m].
   Vec2 axis(int i) const { return {std::cos(angle[i]), std::sin(angle[i])}; }
   Vec2 half_extents(int i) const { return {0.5 * length[i], 0.5 * width[i]}; }
+
+  /// Volume under water at immersion `depth` (clamped to [0, b]) [m^3] (spec 2).
+  double submerged_volume(int i, double depth) const;
 };
 
 /// Submerged cross-section of a log of diameter l at immersion depth d (circle segment) [m^2].
@@ -67,5 +86,8 @@ double log_segment_area(double diameter, double depth);
 /// gets its full height.
 double floating_draft(Shape shape, double width, double height, double density,
                       double water_density);
+
+/// Surface area of the whole body (a log's mantle and two end discs, a box's six faces) [m^2].
+double body_surface(Shape shape, double length, double width, double height);
 
 }  // namespace flotsam

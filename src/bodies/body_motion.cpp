@@ -1,0 +1,98 @@
+#include "bodies/body_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bodies/bed_contact.hpp"
+
+namespace flotsam {
+
+Vec2 AxisReference::at(double angle) const {
+  const double d = angle - theta;  // [rad]
+  if (d == 0.0) return axis;
+  if (std::abs(d) > 0.05) return {std::cos(angle), std::sin(angle)};
+  const double d2 = d * d;
+  const double c = 1.0 - d2 / 2 * (1.0 - d2 / 12 * (1.0 - d2 / 30 * (1.0 - d2 / 56)));
+  const double s = d * (1.0 - d2 / 6 * (1.0 - d2 / 20 * (1.0 - d2 / 42)));
+  return {c * axis.x() - s * axis.y(), s * axis.x() + c * axis.y()};
+}
+
+BodyStateVector body_state(const BodySet& bodies, int i) {
+  BodyStateVector y;
+  y << bodies.position[i], bodies.angle[i], bodies.velocity[i], bodies.angular_velocity[i];
+  return y;
+}
+
+void set_body_state(BodySet& bodies, int i, const BodyStateVector& y) {
+  bodies.position[i] = y.head<2>();
+  bodies.angle[i] = y[2];
+  bodies.velocity[i] = y.segment<2>(3);
+  bodies.angular_velocity[i] = y[5];
+}
+
+BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const BodyStateVector& y,
+                                const FlowField& flow, int& hint, const ForceModel& model,
+                                BodyLoads* loads, const AxisReference* reference) {
+  BodyStateVector dy;
+  const Vec2 G = y.head<2>();
+  const Vec2 u_p = y.segment<2>(3);
+  const double omega = y[5];
+  dy.head<2>() = u_p;
+  dy[2] = omega;
+  dy.tail<3>().setZero();
+
+  const FlowSample at_G = flow.sample(G, t, hint);
+  if (!at_G.inside) {  // coasts until the caller removes it (outflow) or reports it
+    if (loads) {
+      *loads = BodyLoads{};
+      loads->outside = true;
+    }
+    return dy;
+  }
+
+  // Immersion and displaced mass (spec 2).
+  const double d = bodies.draft[i];
+  const double m_p = bodies.mass[i];
+  const bool floating = at_G.H > d && bodies.density[i] < model.rho;
+  const double h_s = std::clamp(at_G.H, 0.0, d);
+  const double m_f = floating ? m_p : model.rho * bodies.submerged_volume(i, h_s);
+  const double C_a = model.physics.added_mass_coefficient;
+
+  // Fluid acceleration and the forces of the water (M-5, M-6, M-7, M-8).
+  const Vec2 Du_f_Dt = at_G.du_dt + at_G.grad_u * at_G.u;
+  const Vec2 axis = reference ? reference->at(y[2]) : Vec2(std::cos(y[2]), std::sin(y[2]));
+  const Drag drag = drag_on_body(bodies, i, BodyPose{G, axis, u_p, d, at_G, hint}, t, flow, model);
+  const double T_rot = rotation_torque(model.rho, model.physics.rotation_coefficient, h_s,
+                                       bodies.length[i], omega, fluid_spin(at_G.grad_u));
+  const Vec2 F_fluid = (1.0 + C_a) * m_f * Du_f_Dt;
+  Vec2 F = F_fluid + drag.force;   // [N]
+  double T = drag.torque + T_rot;  // [N m]
+
+  // Bed contact of a grounded body (spec 3.4).
+  Vec2 F_bed = Vec2::Zero();
+  if (!floating) {
+    const double W_eff = effective_weight(m_p, m_f, model.g);
+    F_bed = slope_force(W_eff, at_G.grad_zb);
+    const BedFriction friction =
+        bed_friction(u_p, omega, F + F_bed, T, model.physics.bed_friction, W_eff, bodies.length[i]);
+    F_bed += friction.force;
+    T += friction.torque;
+  }
+  F += F_bed;
+
+  const Vec2 du_p_dt = F / (m_p + C_a * m_f);  // (M-5)
+  dy.segment<2>(3) = du_p_dt;
+  dy[5] = T / bodies.inertia[i];
+  if (loads) {
+    loads->drag = drag.force;
+    loads->fluid = F_fluid;
+    loads->bed = F_bed;
+    loads->reaction = drag.force + C_a * m_f * (Du_f_Dt - du_p_dt);  // spec 5 step 3
+    loads->torque = T;
+    loads->grounded = !floating;
+    loads->outside = false;
+  }
+  return dy;
+}
+
+}  // namespace flotsam

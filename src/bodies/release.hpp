@@ -1,0 +1,62 @@
+#pragma once
+// Bodies entering the domain (spec 5): given explicitly (position, angle, velocity), or released
+// from a line at a rate with sizes, densities and angles drawn uniformly in ranges from a seeded
+// std::mt19937_64, so that the same seed gives the same bodies.
+//
+// Every body is checked where it is placed; a bad one is an InputError naming it:
+//   * a non-positive length, width, height or density, or a width larger than the length;
+//   * its centre or a corner outside the domain ("overlapping a pier" is the same: a pier is a
+//     hole in the mesh);
+//   * its centre on a dry point (H < dry depth).
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bodies/body_set.hpp"
+#include "flow/flow_field.hpp"
+#include "io/case.hpp"
+
+namespace flotsam {
+
+/// Where bodies are checked: the case file for messages, and the dry depth.
+struct PlacementCheck {
+  std::string source;       // the case file ("" when built in code)
+  double dry_depth = 1e-3;  // H_dry [m] (spec 1.5)
+};
+
+/// Checks the explicit bodies against the flow at time t and appends them; returns the index
+/// of the first one. Messages name `bodies[k]` and the body's id.
+int add_explicit_bodies(BodySet& bodies, const std::vector<BodySpec>& specs, const FlowField& flow,
+                        double t, const PlacementCheck& check);
+
+/// Checks one body spec; `what` names it in messages (e.g. "bodies[2] (id 7)").
+void check_body_placement(const BodySpec& spec, const FlowField& flow, double t,
+                          const PlacementCheck& check, const std::string& what);
+
+/// The release lines of a case, each with its own random stream.
+class Releaser {
+ public:
+  /// Checks the releases (rate > 0, ranges ordered and positive); messages name `releases[k]`.
+  Releaser(std::vector<Release> releases, const PlacementCheck& check);
+
+  /// Appends the bodies whose release times t_k = start + k 60/rate (k = 0, 1, ..., t_k <=
+  /// end) fall in [t0, t1) (and any earlier one not yet released); each is placed at rest at a
+  /// uniform point of its line with uniform L, l, density and angle. Returns how many were
+  /// released.
+  int release(BodySet& bodies, const FlowField& flow, double t0, double t1);
+
+  /// Bodies released so far by release line r.
+  long released(int r) const { return lines_[r].count; }
+
+ private:
+  struct Line {
+    Release release;
+    std::mt19937_64 random;
+    long count = 0;  // bodies released so far
+  };
+  std::vector<Line> lines_;
+  PlacementCheck check_;
+};
+
+}  // namespace flotsam
