@@ -5,26 +5,32 @@
 #include <cmath>
 
 #include "io/output_directory.hpp"
+#include "io/run_state.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace flotsam {
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
-                     const Mesh& mesh, bool overwrite, const std::string& case_file)
+                     const Mesh& mesh, const std::vector<std::uint8_t>& open_group, bool overwrite,
+                     const std::string& case_file)
     : directory_(prepare_output_directory(directory.string(), overwrite, case_file)),
       name_(name),
       flow_index_((directory_ / (name + ".pvd")).string()),
       body_index_((directory_ / (name + "_bodies.pvd")).string()) {
   write_boundary_vtp((directory_ / "boundary.vtp").string(), mesh);
+  write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group});
   balance_ = std::make_unique<CsvWriter>(
       (directory_ / (name + "_balance.csv")).string(),
       std::vector<std::string>{"t [s]", "volume [m^3]", "outflow [m^3]", "balance error [m^3]",
                                "relative error [-]"});
 }
 
-void RunOutput::write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies) {
+void RunOutput::write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
+                      const std::vector<std::uint8_t>& jammed) {
   write_flow(flow);
   if (with_bodies) write_bodies(bodies, flow.time());
+  write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", index_)).string(), flow.time(),
+                     flow.eta(), flow.u(), flow.v(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
   balance_->row({flow.time(), b.volume, b.outflow, b.error(), b.relative_error()});
   ++index_;

@@ -6,6 +6,8 @@
 //   <name>_bodies.csv                     every body at every output time (trajectories)
 //   <name>_balance.csv                    water volume balance at every output time
 //   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
+//   run.bin + state_NNNNNN.bin            the mesh once, the state at every output, for
+//                                         `flotsam render` (io/run_state.hpp)
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -22,10 +24,13 @@ class RunOutput {
  public:
   /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp.
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            bool overwrite, const std::string& case_file);
+            const std::vector<std::uint8_t>& open_group, bool overwrite,
+            const std::string& case_file);
 
   /// Writes output number `index_` at the solver's current time.
-  void write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies);
+  /// `jammed`: one flag per body (bodies in a jam, spec 6.3), or empty.
+  void write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
+             const std::vector<std::uint8_t>& jammed);
 
   /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
   void write_jams(double t, const JamStatistics& stats, const JamGeometry& geometry,

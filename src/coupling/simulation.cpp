@@ -67,7 +67,9 @@ void Simulation::initialize() {
     const auto dir = options_.output_directory.empty()
                          ? std::filesystem::path(case_.output.directory) / case_.name
                          : options_.output_directory;
-    output_ = std::make_unique<RunOutput>(dir, case_.name, mesh_,
+    std::vector<std::uint8_t> open_group(mesh_.group_names.size(), 0);
+    for (int g : outflow_groups_) open_group[g] = 1;
+    output_ = std::make_unique<RunOutput>(dir, case_.name, mesh_, open_group,
                                           options_.overwrite || case_.output.overwrite, case_.file);
   }
   next_output_ = time_;
@@ -159,10 +161,15 @@ void Simulation::write_output_if_due(bool force) {
   if (!output_) return;
   if (!force && time_ < next_output_ - 1e-9 * case_.time.step) return;
   auto timed = timer_.time(Stage::output);
-  output_->write(*flow_, bodies_, has_bodies_);
-  if (has_bodies_)
-    output_->write_jams(time_, jam_statistics(), jam_geometry_, backwater_rise(),
-                        reference_flow_ != nullptr);
+  std::vector<std::uint8_t> jammed;
+  if (has_bodies_) {
+    const JamStatistics jams = jam_statistics();
+    jammed.assign(bodies_.size(), 0);
+    for (const Jam& jam : jams.jams)
+      for (int i : jam.bodies) jammed[i] = 1;
+    output_->write_jams(time_, jams, jam_geometry_, backwater_rise(), reference_flow_ != nullptr);
+  }
+  output_->write(*flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
 }
 

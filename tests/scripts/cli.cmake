@@ -23,3 +23,24 @@ set_tests_properties(cli.info_paper_channel PROPERTIES FIXTURES_REQUIRED cli_mes
 flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --overwrite"
                  mesh ${examples}/bridge_piers.yaml -o bridge.msh)
 set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)
+
+# A tiny two-way run, then its pictures at a requested size (issue 6: render test).
+flotsam_cli_test(run_tiny_case 0 "bodies: 2 released"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_run --overwrite -q)
+set_tests_properties(cli.run_tiny_case PROPERTIES FIXTURES_SETUP cli_tiny_run)
+flotsam_cli_test(run_refuses_existing_folder nonzero "exists and is not empty"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_run -q)
+set_tests_properties(cli.run_refuses_existing_folder PROPERTIES FIXTURES_REQUIRED cli_tiny_run)
+flotsam_cli_test(render_tiny_run 0 "wrote tiny_run/bodies.png"
+                 render tiny_run --width 640 --height 320)
+set_tests_properties(cli.render_tiny_run PROPERTIES FIXTURES_REQUIRED cli_tiny_run
+                     FIXTURES_SETUP cli_tiny_pictures)
+foreach(picture water_surface velocity bodies frames/frame_000002)
+  string(REPLACE "/" "_" test_name ${picture})
+  add_test(NAME cli.png_${test_name}
+           COMMAND ${FLOTSAM_VTK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_png.py
+                   ${cli_work}/tiny_run/${picture}.png 640 320)
+  set_tests_properties(cli.png_${test_name} PROPERTIES FIXTURES_REQUIRED cli_tiny_pictures
+                       LABELS "cli")
+endforeach()
+flotsam_cli_test(render_not_a_run nonzero "is not a flotsam run folder" render .)

@@ -1,8 +1,8 @@
 # VTK's own readers (python3-vtk9) read what flotsam writes (labels unit;io):
 #   io.vtk_write_samples   writes .vtu/.vtp/.pvd samples into the build tree (fixture setup),
 #   io.vtk_read_samples    checks them with tests/scripts/check_vtk.py.
-# Debian's VTK Python module is found by the system interpreter, not by a pyenv python3.
-find_program(FLOTSAM_VTK_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
+# FLOTSAM_VTK_PYTHON (/usr/bin/python3, which finds Debian's VTK module) is set in
+# tests/CMakeLists.txt.
 
 add_executable(write_vtk_samples ${CMAKE_CURRENT_LIST_DIR}/write_vtk_samples.cpp)
 target_link_libraries(write_vtk_samples PRIVATE flotsam_options flotsam_io flotsam_bodies)
