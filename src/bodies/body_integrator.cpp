@@ -43,6 +43,16 @@ struct BodyStepHooks {
   void accepted(double /*t*/, const BodyStateVector& /*y*/) const {}
 };
 
+/// Keeps the loads of body i's last accepted sub-step, its element, and its state.
+void record_loads(BodySet& bodies, int i, const BodyLoads& loads, int hint) {
+  bodies.element_hint[i] = hint;
+  bodies.drag_force[i] = loads.drag;
+  bodies.bed_force[i] = loads.bed;
+  bodies.reaction_force[i] = loads.reaction;
+  bodies.torque[i] = loads.torque;
+  if (!loads.outside) bodies.state[i] = loads.grounded ? BodyState::grounded : BodyState::floating;
+}
+
 }  // namespace
 
 int BodyIntegrator::contact_intervals(const BodySet& bodies, double dt) const {
@@ -61,6 +71,15 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
                                   long& rejected) const {
   int hint = bodies.element_hint[i];
   BodyLoads loads;
+  if (bodies.anchored[i]) {  // held in place: the loads at rest at the interval's end, no motion
+    AxisReference reference(bodies.angle[i]);
+    BodyStateVector y = body_state(bodies, i);
+    y.segment<3>(3).setZero();
+    body_derivative(bodies, i, tb, y, flow, hint, model_, &loads, &reference);
+    set_body_state(bodies, i, y);
+    record_loads(bodies, i, loads, hint);
+    return;
+  }
   const double l = bodies.width[i];
   const double tol = model_.physics.rk_tolerance;
 
@@ -86,12 +105,7 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
                                                counters, BodyStepHooks{loads, bodies.length[i], l});
   set_body_state(bodies, i, y);
   bodies.step_size[i] = h;
-  bodies.element_hint[i] = hint;
-  bodies.drag_force[i] = loads.drag;
-  bodies.bed_force[i] = loads.bed;
-  bodies.reaction_force[i] = loads.reaction;
-  bodies.torque[i] = loads.torque;
-  if (!loads.outside) bodies.state[i] = loads.grounded ? BodyState::grounded : BodyState::floating;
+  record_loads(bodies, i, loads, hint);
   accepted += counters.accepted;
   rejected += counters.rejected;
 }

@@ -76,6 +76,7 @@ int BodySet::add(const BodySpec& s) {
   angular_velocity.push_back(s.angular_velocity);
   state.push_back(BodyState::floating);
   element_hint.push_back(-1);
+  anchored.push_back(s.anchored ? 1 : 0);
   step_size.push_back(0.0);
   drag_force.push_back(Vec2::Zero());
   bed_force.push_back(Vec2::Zero());

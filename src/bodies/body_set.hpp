@@ -25,6 +25,8 @@ struct BodySpec {
   Vec2 velocity = Vec2::Zero();   // u_p [m/s]
   double angular_velocity = 0.0;  // omega [rad/s]
   long id = -1;                   // user's id; -1: the next free one
+  bool anchored = false;          // held in place (a post, a pile, a stuck jam): feels the flow and
+                                  // acts on it and on other bodies, but does not move
 };
 
 struct BodySet {
@@ -55,8 +57,9 @@ struct BodySet {
   std::vector<Vec2> velocity;            // u_p [m/s]
   std::vector<double> angular_velocity;  // omega [rad/s]
   std::vector<BodyState> state;
-  std::vector<int> element_hint;  // last element found for G (point location), -1 unknown
-  std::vector<double> step_size;  // RKF45 step proposed for the next sub-step [s], 0: unknown
+  std::vector<std::uint8_t> anchored;  // 1: does not move (BodySpec::anchored)
+  std::vector<int> element_hint;       // last element found for G (point location), -1 unknown
+  std::vector<double> step_size;       // RKF45 step proposed for the next sub-step [s], 0: unknown
 
   // Forces at the start of each body's last accepted sub-step (output, two-way coupling).
   std::vector<Vec2> drag_force;      // F_drag [N] (M-6), summed over drag points

@@ -113,7 +113,7 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
   m.inverse_mass.assign(static_cast<std::size_t>(n), 0.0);
   m.inverse_inertia.assign(static_cast<std::size_t>(n), 0.0);
   for (int i = 0; i < n; ++i) {
-    if (bodies.state[i] == BodyState::gone) continue;
+    if (bodies.state[i] == BodyState::gone || bodies.anchored[i]) continue;  // immovable: 1/m = 0
     // A floating body displaces its own mass (m_f = m_p, spec 2): added mass C_a m_p (M-5).
     const bool add = config.added_mass_in_contact && bodies.state[i] == BodyState::floating;
     const double factor = add ? 1.0 + added_mass_coefficient : 1.0;  // [-]

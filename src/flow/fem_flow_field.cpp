@@ -71,22 +71,37 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
     const double zb = (z[el[3]] + z[el[4]] + z[el[5]]) / 3.0;  // exact mean of a P2 field
     return rho * mesh.area[e] * (eta - zb);
   };
-  for (const BodyReaction& r : reactions) {
+  // Elements near a body are found by a walk over neighbours from the element holding its
+  // centre, among those whose centroid lies within the footprint's circumcircle widened by the
+  // element's own size; the footprint holds those whose centroid is inside the rectangle.
+  std::vector<int> stamp(mesh.element_count(), -1), queue;
+  for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
+    const BodyReaction& r = reactions[k];
+    const Location where = locator_.locate(r.centre, -1);
+    if (!where.inside) continue;
     const Vec2 axis(std::cos(r.angle), std::sin(r.angle));
+    const double reach = r.half_extents.norm();  // [m]
     std::vector<int> covered;
     double mass = 0.0;
-    for (int e = 0; e < mesh.element_count(); ++e) {
+    queue.assign(1, where.element);
+    stamp[where.element] = k;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const int e = queue[q];
       const auto& el = mesh.elements[e];
       const Vec2 c = (mesh.nodes[el[0]] + mesh.nodes[el[1]] + mesh.nodes[el[2]]) / 3.0 - r.centre;
-      if (std::abs(c.dot(axis)) > r.half_extents.x() ||
-          std::abs(cross(axis, c)) > r.half_extents.y())
-        continue;
-      covered.push_back(e);
-      mass += element_water_mass(e);
+      if (c.norm() > reach + 2.0 * std::sqrt(mesh.area[e])) continue;
+      if (std::abs(c.dot(axis)) <= r.half_extents.x() &&
+          std::abs(cross(axis, c)) <= r.half_extents.y()) {
+        covered.push_back(e);
+        mass += element_water_mass(e);
+      }
+      for (int n : mesh.neighbours[e])
+        if (n >= 0 && stamp[n] != k) {
+          stamp[n] = k;
+          queue.push_back(n);
+        }
     }
-    if (covered.empty()) {
-      const Location where = locator_.locate(r.centre, -1);
-      if (!where.inside) continue;
+    if (covered.empty()) {  // a footprint smaller than the elements: the one holding the centre
       covered.push_back(where.element);
       mass = element_water_mass(where.element);
     }

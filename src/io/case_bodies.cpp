@@ -86,6 +86,7 @@ BodySpec read_body(const YamlValue& item) {
   b.velocity = {m.number("u", 0.0), m.number("v", 0.0)};
   b.angular_velocity = m.number("omega", 0.0);
   b.id = m.integer("id", b.id, Range::non_negative());
+  b.anchored = m.boolean("anchored", b.anchored);
   return b;
 }
 
