@@ -80,6 +80,32 @@ struct BodySet {
 
   /// Volume under water at immersion `depth` (clamped to [0, b]) [m^3] (spec 2).
   double submerged_volume(int i, double depth) const;
+
+  /// Calls f(name, array) for every per-body array, in a fixed order: a checkpoint keeps them
+  /// all, so that a restarted run continues bit for bit. A new array must be listed here.
+  template <class F>
+  void for_each_array(F&& f) {
+    visit_arrays(*this, f);
+  }
+  template <class F>
+  void for_each_array(F&& f) const {
+    visit_arrays(*this, f);
+  }
+
+ private:
+  template <class Self, class F>
+  static void visit_arrays(Self& b, F& f) {
+    f("shape", b.shape), f("length", b.length), f("width", b.width), f("height", b.height);
+    f("density", b.density), f("mass", b.mass), f("inertia", b.inertia), f("draft", b.draft);
+    f("id", b.id), f("equal_volume_diameter", b.equal_volume_diameter);
+    f("sphericity", b.sphericity), f("ganser_K2", b.ganser_K2);
+    f("ganser_K1_term", b.ganser_K1_term), f("pressure_reach", b.pressure_reach);
+    f("position", b.position), f("angle", b.angle), f("velocity", b.velocity);
+    f("angular_velocity", b.angular_velocity), f("state", b.state), f("anchored", b.anchored);
+    f("element_hint", b.element_hint), f("step_size", b.step_size);
+    f("drag_force", b.drag_force), f("bed_force", b.bed_force);
+    f("reaction_force", b.reaction_force), f("torque", b.torque);
+  }
 };
 
 /// Submerged cross-section of a log of diameter l at immersion depth d (circle segment) [m^2].

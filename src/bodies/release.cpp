@@ -1,6 +1,7 @@
 #include "bodies/release.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -125,6 +126,22 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
     }
   }
   return released_now;
+}
+
+std::string Releaser::save_state() const {
+  std::ostringstream out;
+  for (const Line& line : lines_) out << line.count << ' ' << line.random << '\n';
+  return out.str();
+}
+
+void Releaser::restore_state(const std::string& text) {
+  std::istringstream in(text);
+  for (Line& line : lines_) in >> line.count >> line.random;
+  if (!in)
+    throw_input_error(
+        "the release state in the checkpoint does not fit the case's {} "
+        "release lines",
+        lines_.size());
 }
 
 }  // namespace flotsam

@@ -49,6 +49,11 @@ class Releaser {
   /// Bodies released so far by release line r.
   long released(int r) const { return lines_[r].count; }
 
+  /// The random streams and counts as text, and back (checkpoints: a restarted run releases
+  /// the same bodies).
+  std::string save_state() const;
+  void restore_state(const std::string& text);
+
  private:
   struct Line {
     Release release;

@@ -12,7 +12,7 @@ namespace flotsam::cli {
 void add_run_command(CLI::App& app) {
   struct Options {
     std::string case_file, output;
-    bool overwrite = false, quiet = false;
+    bool overwrite = false, quiet = false, restart = false;
     double end = -1.0;
   };
   auto options = std::make_shared<Options>();
@@ -31,11 +31,15 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--end", options->end, "end time [s], instead of the case's time.end")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("-q,--quiet", options->quiet, "no progress line");
+  cmd->add_flag("--restart", options->restart,
+                "continue the run in the output folder from its last output (checkpoint.bin); "
+                "with --end, to a later end time")
+      ->excludes("--overwrite");
   cmd->callback([options] {
     Case c = read_case(options->case_file);
     if (options->end > 0) c.time.end = options->end;
     Mesh mesh = generate_mesh(c.mesh);
-    RunOptions run{options->output, options->overwrite, true, !options->quiet};
+    RunOptions run{options->output, options->overwrite, true, !options->quiet, options->restart};
     Simulation simulation(std::move(c), std::move(mesh), run);
     simulation.run();
     fmt::print("{}", simulation.summary());

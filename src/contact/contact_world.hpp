@@ -57,6 +57,15 @@ class ContactWorld {
   ContactReport report(const BoundarySegments& walls, int body_count) const;
 
   void set_broad_phase(BroadPhase method) { broad_phase_ = method; }
+
+  /// What the next step starts from besides the bodies: the last contacts (warm start) and the
+  /// sweep order. A checkpoint keeps it; restore() puts it back.
+  const SweepAndPrune& sweep() const { return sweep_; }
+  void restore(std::vector<ContactConstraint> contacts, std::vector<int> sweep_order,
+               int sweep_axis) {
+    contacts_ = std::move(contacts);
+    sweep_.restore(std::move(sweep_order), sweep_axis);
+  }
   const ContactConfig& config() const { return config_; }
 
  private:

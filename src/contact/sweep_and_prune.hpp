@@ -27,6 +27,13 @@ class SweepAndPrune {
                   std::vector<BodyPair>& pairs);
 
   int axis() const { return axis_; }
+  /// The order kept between steps and its axis: a checkpoint keeps them so that a restarted run
+  /// finds its pairs in the same order (and so solves its contacts in the same order).
+  const std::vector<int>& order() const { return order_; }
+  void restore(std::vector<int> order, int axis) {
+    order_ = std::move(order);
+    axis_ = axis;
+  }
   long swaps_last_step() const { return swaps_; }  // insertion-sort moves [-], for profiling
 
  private:

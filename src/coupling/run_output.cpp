@@ -9,6 +9,13 @@
 #include "io/vtk_writer.hpp"
 
 namespace flotsam {
+namespace {
+
+std::vector<std::string> balance_columns() {
+  return {"t [s]", "volume [m^3]", "outflow [m^3]", "balance error [m^3]", "relative error [-]"};
+}
+
+}  // namespace
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const std::vector<std::uint8_t>& open_group, bool overwrite,
@@ -19,21 +26,35 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
       body_index_((directory_ / (name + "_bodies.pvd")).string()) {
   write_boundary_vtp((directory_ / "boundary.vtp").string(), mesh);
   write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group});
-  balance_ = std::make_unique<CsvWriter>(
-      (directory_ / (name + "_balance.csv")).string(),
-      std::vector<std::string>{"t [s]", "volume [m^3]", "outflow [m^3]", "balance error [m^3]",
-                               "relative error [-]"});
+  balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
+                                         balance_columns());
+}
+
+RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
+                     const std::vector<double>& times, bool with_bodies)
+    : directory_(directory),
+      name_(name),
+      flow_index_((directory_ / (name + ".pvd")).string()),
+      body_index_((directory_ / (name + "_bodies.pvd")).string()),
+      times_(times),
+      append_(true) {
+  for (std::size_t k = 0; k < times_.size(); ++k) {
+    flow_index_.add(times_[k], fmt::format("flow_{:06d}.vtu", k));
+    if (with_bodies) body_index_.add(times_[k], fmt::format("bodies_{:06d}.vtp", k));
+  }
+  balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
+                                         balance_columns(), true);
 }
 
 void RunOutput::write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
                       const std::vector<std::uint8_t>& jammed) {
   write_flow(flow);
   if (with_bodies) write_bodies(bodies, flow.time());
-  write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", index_)).string(), flow.time(),
+  write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), flow.time(),
                      flow.eta(), flow.u(), flow.v(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
   balance_->row({flow.time(), b.volume, b.outflow, b.error(), b.relative_error()});
-  ++index_;
+  times_.push_back(flow.time());
 }
 
 void RunOutput::write_flow(const ShallowWaterSolver& flow) {
@@ -53,13 +74,13 @@ void RunOutput::write_flow(const ShallowWaterSolver& flow) {
   fields.add_point_scalar("|u| [m/s]", speed);
   fields.add_point_scalar("vorticity [1/s]", vorticity);
   fields.add_cell_scalar("nu_t [m^2/s]", flow.eddy_viscosity());
-  const std::string file = fmt::format("flow_{:06d}.vtu", index_);
+  const std::string file = fmt::format("flow_{:06d}.vtu", count());
   write_vtu((directory_ / file).string(), mesh, fields, flow.time());
   flow_index_.add(flow.time(), file);
 }
 
 void RunOutput::write_bodies(const BodySet& bodies, double t) {
-  const std::string file = fmt::format("bodies_{:06d}.vtp", index_);
+  const std::string file = fmt::format("bodies_{:06d}.vtp", count());
   BodyFields extra;
   extra.add_vector("drag [N]", bodies.drag_force);
   extra.add_vector("bed force [N]", bodies.bed_force);
@@ -71,7 +92,8 @@ void RunOutput::write_bodies(const BodySet& bodies, double t) {
     trajectories_ = std::make_unique<CsvWriter>(
         (directory_ / (name_ + "_bodies.csv")).string(),
         std::vector<std::string>{"t [s]", "id", "x [m]", "y [m]", "angle [rad]", "u [m/s]",
-                                 "v [m/s]", "omega [rad/s]", "state (0 floating 1 grounded)"});
+                                 "v [m/s]", "omega [rad/s]", "state (0 floating 1 grounded)"},
+        append_);
   for (int i = 0; i < bodies.size(); ++i)
     if (bodies.state[i] != BodyState::gone)
       trajectories_->row({t, static_cast<double>(bodies.id[i]), bodies.position[i].x(),
@@ -88,7 +110,7 @@ void RunOutput::write_jams(double t, const JamStatistics& stats, const JamGeomet
                            const std::vector<double>& rise, bool with_backwater) {
   if (!jams_)
     jams_ = std::make_unique<JamStatisticsWriter>((directory_ / (name_ + "_jams.csv")).string(),
-                                                  geometry, with_backwater);
+                                                  geometry, with_backwater, append_);
   jams_->write(t, stats, rise);
 }
 

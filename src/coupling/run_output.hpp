@@ -22,10 +22,16 @@ namespace flotsam {
 
 class RunOutput {
  public:
-  /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp.
+  /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp and run.bin.
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
             const std::vector<std::uint8_t>& open_group, bool overwrite,
             const std::string& case_file);
+
+  /// Continues the output of a run in `directory` (a restart): the indexes list again the
+  /// `times` already written, the tables get their rows appended, and the next output is
+  /// number times.size().
+  RunOutput(const std::filesystem::path& directory, const std::string& name,
+            const std::vector<double>& times, bool with_bodies);
 
   /// Writes output number `index_` at the solver's current time.
   /// `jammed`: one flag per body (bodies in a jam, spec 6.3), or empty.
@@ -37,7 +43,8 @@ class RunOutput {
                   const std::vector<double>& rise, bool with_backwater);
 
   const std::filesystem::path& directory() const { return directory_; }
-  int count() const { return index_; }
+  int count() const { return static_cast<int>(times_.size()); }
+  const std::vector<double>& times() const { return times_; }  // [s] of each output so far
 
  private:
   void write_flow(const ShallowWaterSolver& flow);
@@ -45,8 +52,9 @@ class RunOutput {
 
   std::filesystem::path directory_;
   std::string name_;
-  int index_ = 0;
   PvdWriter flow_index_, body_index_;
+  std::vector<double> times_;  // [s] of each output written, in order
+  bool append_ = false;        // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
 };

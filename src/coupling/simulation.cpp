@@ -47,7 +47,8 @@ void Simulation::initialize() {
   if (has_bodies_) {
     bodies_.water_density = case_.flow.water_density;
     const PlacementCheck check{case_.file, case_.flow.dry_depth};
-    add_explicit_bodies(bodies_, case_.bodies.bodies, *flow_field_, time_, check);
+    if (!options_.restart)  // a restart takes its bodies from the checkpoint
+      add_explicit_bodies(bodies_, case_.bodies.bodies, *flow_field_, time_, check);
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
     integrator_ =
         std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
@@ -63,17 +64,31 @@ void Simulation::initialize() {
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }
   }
+  next_output_ = time_;
+  if (options_.restart) {
+    const auto checkpoint = output_directory() / "checkpoint.bin";
+    if (!std::filesystem::exists(checkpoint))
+      throw_input_error(
+          "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
+          "run without --restart to start afresh",
+          output_directory().string());
+    read_checkpoint(checkpoint.string());
+    if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
+    return;
+  }
   if (options_.write_output) {
-    const auto dir = options_.output_directory.empty()
-                         ? std::filesystem::path(case_.output.directory) / case_.name
-                         : options_.output_directory;
     std::vector<std::uint8_t> open_group(mesh_.group_names.size(), 0);
     for (int g : outflow_groups_) open_group[g] = 1;
-    output_ = std::make_unique<RunOutput>(dir, case_.name, mesh_, open_group,
+    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_group,
                                           options_.overwrite || case_.output.overwrite, case_.file);
   }
-  next_output_ = time_;
   write_output_if_due(false);
+}
+
+std::filesystem::path Simulation::output_directory() const {
+  return options_.output_directory.empty()
+             ? std::filesystem::path(case_.output.directory) / case_.name
+             : options_.output_directory;
 }
 
 bool Simulation::done() const {
@@ -171,6 +186,7 @@ void Simulation::write_output_if_due(bool force) {
   }
   output_->write(*flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
+  write_checkpoint((output_->directory() / "checkpoint.bin").string());
 }
 
 void Simulation::run() {
@@ -187,7 +203,7 @@ void Simulation::run() {
     }
   }
   progress.finish();
-  if (output_ && output_->count() > 0 && next_output_ - case_.output.interval < time_ - 1e-9)
+  if (output_ && output_->times().back() < time_)
     write_output_if_due(true);  // the final state, when the last interval was not complete
 }
 

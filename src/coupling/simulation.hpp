@@ -35,6 +35,7 @@ struct RunOptions {
   bool overwrite = false;                  // or the case's output.overwrite
   bool write_output = true;                // false: compute only (tests, benchmarks)
   bool progress = true;                    // progress line on stderr
+  bool restart = false;  // continue the run in the output folder from its last checkpoint
 };
 
 class Simulation {
@@ -73,6 +74,10 @@ class Simulation {
   void apply_reaction();
   void check_diagnostics();
   void write_output_if_due(bool force);
+  std::filesystem::path output_directory() const;
+  // checkpoint.cpp: everything a run needs to continue bit for bit from an output time.
+  void write_checkpoint(const std::string& path) const;
+  void read_checkpoint(const std::string& path);
 
   Case case_;
   Mesh mesh_;

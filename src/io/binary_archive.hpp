@@ -21,8 +21,14 @@
 namespace flotsam {
 
 /// Values stored as their bytes: trivially copyable types, and Vec2 (two doubles, no padding).
+/// Plain structs whose members are such values (Eigen's fixed-size vectors are not trivially
+/// copyable by the type trait, but are plain arrays of doubles) opt in by specialising
+/// is_plain_struct.
 template <class T>
-constexpr bool is_archivable = std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec2>;
+struct is_plain_struct : std::false_type {};
+template <class T>
+constexpr bool is_archivable =
+    std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec2> || is_plain_struct<T>::value;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class ArchiveWriter {

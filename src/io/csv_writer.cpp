@@ -26,10 +26,11 @@ std::string quoted_if_needed(const std::string& name) {
 
 }  // namespace
 
-CsvWriter::CsvWriter(const std::string& path, std::vector<std::string> columns)
+CsvWriter::CsvWriter(const std::string& path, std::vector<std::string> columns, bool append)
     : path_(path), columns_(std::move(columns)) {
-  file_ = std::fopen(path_.c_str(), "w");
+  file_ = std::fopen(path_.c_str(), append ? "a" : "w");
   if (file_ == nullptr) throw_input_error("cannot write '{}': {}", path_, std::strerror(errno));
+  if (append) return;
   std::string header;
   for (std::size_t c = 0; c < columns_.size(); ++c) {
     if (c > 0) header += ',';

@@ -15,8 +15,9 @@ class CsvWriter {
  public:
   /// Creates (replaces) the file and writes the header. Column names should carry their unit,
   /// "speed [m/s]"; a name with a comma or a double quote is quoted (RFC 4180). Throws
-  /// InputError naming the path when the file cannot be created.
-  CsvWriter(const std::string& path, std::vector<std::string> columns);
+  /// InputError naming the path when the file cannot be created. With `append` (a restarted
+  /// run) the rows go after those already in the file, and no header is written.
+  CsvWriter(const std::string& path, std::vector<std::string> columns, bool append = false);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;

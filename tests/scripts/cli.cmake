@@ -44,3 +44,12 @@ foreach(picture water_surface velocity bodies frames/frame_000002)
                        LABELS "cli")
 endforeach()
 flotsam_cli_test(render_not_a_run nonzero "is not a flotsam run folder" render .)
+
+# Stop at t = 2 s, then continue to 4 s from the checkpoint (issue 6: --restart).
+flotsam_cli_test(run_tiny_first_half 0 "simulated +2.0 s"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_restart --end 2
+                 --overwrite -q)
+set_tests_properties(cli.run_tiny_first_half PROPERTIES FIXTURES_SETUP cli_tiny_half)
+flotsam_cli_test(run_tiny_restart 0 "simulated +4.0 s"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_restart --restart -q)
+set_tests_properties(cli.run_tiny_restart PROPERTIES FIXTURES_REQUIRED cli_tiny_half)

@@ -1,0 +1,126 @@
+// Verifies that a run stopped at an output and restarted from its checkpoint (--restart) ends
+// in the same state, bit for bit, as the run that was never stopped: flow, bodies (with
+// contacts and bodies released from a line by a seeded random stream), water balance, and the
+// tables it writes.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "coupling/simulation.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+namespace fs = std::filesystem;
+
+Case restart_case(double end) {
+  Case c;
+  c.name = "restart";
+  c.mesh.kind = MeshSource::Kind::file;
+  c.flow.viscosity = 0.01;
+  c.flow.friction = FrictionLaw::manning;
+  c.flow.friction_coefficient = 0.03;
+  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;
+  c.flow.boundaries = {
+      {BoundaryCondition::Kind::discharge, "left", TimeSeries(40.0), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
+      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
+  c.time = {.end = end, .step = 1.0, .mode = CouplingMode::two_way};
+  c.output.interval = 4.0;
+  for (int k = 0; k < 3; ++k) {  // three logs that collide: the middle one is slow
+    BodySpec log;
+    log.length = 6.0;
+    log.width = 0.5;
+    log.position = Vec2(40.0 + 7.0 * k, 10.0);
+    log.velocity = Vec2(k == 1 ? 0.0 : 2.0 - k, 0.0);
+    c.bodies.bodies.push_back(log);
+  }
+  Release line;
+  line.line_start = Vec2(20.0, 3.0);
+  line.line_end = Vec2(20.0, 17.0);
+  line.end_time = 10.0;
+  line.rate = 30.0;  // [1/min]: one body every 2 s
+  line.length_min = 2.0, line.length_max = 5.0;
+  line.width_min = 0.2, line.width_max = 0.4;
+  line.seed = 7;
+  c.bodies.releases = {line};
+  return c;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
+  const fs::path base = fs::temp_directory_path() / "flotsam_restart_test";
+  fs::remove_all(base);
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  auto options = [&](const std::string& dir, bool restart) {
+    return RunOptions{.output_directory = base / dir,
+                      .overwrite = false,
+                      .write_output = true,
+                      .progress = false,
+                      .restart = restart};
+  };
+  Simulation whole(restart_case(12.0), mesh, options("whole", false));
+  whole.run();
+  {
+    Simulation first_part(restart_case(8.0), mesh, options("split", false));
+    first_part.run();
+  }
+  Simulation rest(restart_case(12.0), mesh, options("split", true));
+  rest.run();
+
+  EXPECT_EQ(rest.step_count(), whole.step_count());
+  EXPECT_EQ(rest.time(), whole.time());
+  EXPECT_EQ(rest.flow().eta(), whole.flow().eta());
+  EXPECT_EQ(rest.flow().u(), whole.flow().u());
+  EXPECT_EQ(rest.flow().v(), whole.flow().v());
+  EXPECT_EQ(rest.flow().water_balance().outflow, whole.flow().water_balance().outflow);
+  const BodySet &a = whole.bodies(), &b = rest.bodies();
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 3);  // bodies were released before and after the stop
+  for (int i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a.position[i], b.position[i]) << "body " << i;
+    EXPECT_EQ(a.velocity[i], b.velocity[i]) << "body " << i;
+    EXPECT_EQ(a.angle[i], b.angle[i]) << "body " << i;
+    EXPECT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "body " << i;
+  }
+  for (const char* table : {"restart_bodies.csv", "restart_balance.csv", "restart_jams.csv",
+                            "restart.pvd", "restart_bodies.pvd"})
+    EXPECT_EQ(text_of(base / "split" / table), text_of(base / "whole" / table)) << table;
+  fs::remove_all(base);
+}
+
+TEST(Restart, WithoutACheckpointIsAnErrorNamingTheFolder) {
+  const fs::path dir = fs::temp_directory_path() / "flotsam_restart_none";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  Simulation s(restart_case(4.0), mesh,
+               {.output_directory = dir,
+                .overwrite = false,
+                .write_output = true,
+                .progress = false,
+                .restart = true});
+  try {
+    s.initialize();
+    FAIL() << "restarted without a checkpoint";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("holds no checkpoint.bin"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(dir.string()));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace flotsam
