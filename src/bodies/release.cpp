@@ -110,17 +110,28 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
       // Draw in a fixed order, so that body k of a line depends only on the seed and k.
       BodySpec spec;
       spec.shape = rel.shape;
-      const double s = uniform(line.random, 0.0, 1.0);
-      spec.position = rel.line_start + s * (rel.line_end - rel.line_start);
       spec.length = uniform(line.random, rel.length_min, rel.length_max);
       spec.width = uniform(line.random, rel.width_min, rel.width_max);
       spec.height = rel.shape == Shape::log ? spec.width : rel.height;
       spec.density = uniform(line.random, rel.density_min, rel.density_max);
-      spec.angle = uniform(line.random, rel.angle_min_deg, rel.angle_max_deg) * pi / 180.0;
       ++line.count;
-      check_body_placement(
-          spec, flow, t_k, check_,
-          fmt::format("releases[{}] body {} (released at t = {} s)", r, line.count - 1, t_k));
+      // A body that does not fit where it is drawn (a long log across a bank near the line's
+      // end) is drawn again along the line and in angle; only when none of the tries fits is
+      // the release an error.
+      constexpr int tries = 100;
+      for (int attempt = 1;; ++attempt) {
+        const double s = uniform(line.random, 0.0, 1.0);
+        spec.position = rel.line_start + s * (rel.line_end - rel.line_start);
+        spec.angle = uniform(line.random, rel.angle_min_deg, rel.angle_max_deg) * pi / 180.0;
+        try {
+          check_body_placement(spec, flow, t_k, check_,
+                               fmt::format("releases[{}] body {} (released at t = {} s, {} tries)",
+                                           r, line.count - 1, t_k, attempt));
+          break;
+        } catch (const InputError&) {
+          if (attempt == tries) throw;
+        }
+      }
       bodies.add(spec);
       ++released_now;
     }

@@ -170,7 +170,7 @@ TEST(Releaser, ALineCrossingDryGroundIsAnErrorNamingTheBody) {
     releaser.release(bodies, channel(), 0, 0.1);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("releases[0] body 0 (released at t = 0 s)"),
+    EXPECT_NE(std::string(e.what()).find("releases[0] body 0 (released at t = 0 s, 100 tries)"),
               std::string::npos)
         << e.what();
   }

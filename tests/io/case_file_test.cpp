@@ -157,6 +157,22 @@ TEST(CaseFile, Bend180ExampleHoldsRozovskiisFlume) {
   }
 }
 
+TEST(CaseFile, BridgeFloodExampleReleasesFiveHundredLogs) {
+  const Case c = read_case(examples + "bridge_flood.yaml");
+  EXPECT_EQ(c.name, "bridge_flood");
+  ASSERT_EQ(c.mesh.channel.piers.size(), 4u);
+  EXPECT_TRUE(c.bodies.bodies.empty());
+  ASSERT_EQ(c.bodies.releases.size(), 1u);
+  const Release& r = c.bodies.releases[0];
+  // Release times start + k 60/rate <= end: 50 per minute over 10 minutes.
+  EXPECT_EQ(std::floor((r.end_time - r.start_time) * r.rate / 60.0) + 1, 500.0);
+  EXPECT_EQ(r.length_min, 5.0);
+  EXPECT_EQ(r.length_max, 25.0);
+  EXPECT_EQ(r.line_start, Vec2(100, 15));
+  EXPECT_EQ(r.line_end, Vec2(100, 155));
+  EXPECT_EQ(c.bodies.contact.restitution, 0.3);
+}
+
 TEST(CaseFile, DocumentationExampleParses) {
   std::ifstream in(std::string(FLOTSAM_SOURCE_DIR) + "/docs/case-format.md");
   std::ostringstream text;
@@ -200,6 +216,7 @@ void expect_case_fits_its_mesh(const Case& c) {
 TEST(CaseFile, ExamplesFitTheirGeneratedMeshes) {
   expect_case_fits_its_mesh(read_case(examples + "bridge_piers.yaml"));
   expect_case_fits_its_mesh(read_case(examples + "bend180.yaml"));
+  expect_case_fits_its_mesh(read_case(examples + "bridge_flood.yaml"));
 }
 
 // ---- values and defaults ------------------------------------------------------------------
