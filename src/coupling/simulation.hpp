@@ -67,6 +67,8 @@ class Simulation {
   /// (output.backwater in two-way runs); empty without a reference flow.
   std::vector<double> backwater_rise() const;
   const ShallowWaterSolver* reference_flow() const { return reference_flow_.get(); }
+  /// The contact stage (bodies only): its last contacts and profile (largest overlap left).
+  const ContactWorld& contacts() const { return *contacts_; }
 
  private:
   void advance_flow(double t1);
