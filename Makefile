@@ -12,7 +12,7 @@ SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-format \
             libeigen3-dev libsuitesparse-dev libgmsh-dev libyaml-cpp-dev libcli11-dev \
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
-            libopenblas0-openmp
+            libopenblas0-openmp time
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
                $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
@@ -55,9 +55,15 @@ demo: build
 	$(BUILD)/flotsam run examples/bridge_piers.yaml --overwrite
 	$(BUILD)/flotsam render out/bridge_piers
 
+# Benchmarks: the Google Benchmark programs in bench/, then the two timed runs of issue 6
+# (results under build/bench_runs/, replaced each time). Figures go to docs/performance.md.
 bench: build
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	@for b in $(BUILD)/bench/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.5; done
+	@for c in bridge_piers bridge_flood; do echo "== flotsam run examples/$$c.yaml"; \
+	    /usr/bin/time -f "$$c: %e s wall, %U s user, %M KiB peak" \
+	    $(BUILD)/flotsam run examples/$$c.yaml -o $(BUILD)/bench_runs/$$c --overwrite -q \
+	    | grep -E "simulated|wall time"; done
 
 format:
 	find src tests bench -name '*.[ch]pp' | xargs clang-format -i

@@ -92,9 +92,24 @@ std::vector<std::string> render_run(const std::string& run_directory, const Pict
     if (report) report(path.string());
   };
 
-  // The three figures at the last output time.
-  const RunSnapshot last = read_run_snapshot(states.back().string());
+  std::vector<RunSnapshot> snapshots;
+  for (const auto& file : states) snapshots.push_back(read_run_snapshot(file.string()));
+  const RunSnapshot& last = snapshots.back();
   const std::optional<ViewWindow> zoom = pier_window(run.mesh);
+
+  // Figures 15 and 16 at the last output; Fig. 17 at the output with the most bodies among the
+  // piers (the latest of equals), since by the end they may all have left.
+  const RunSnapshot* busiest = &last;
+  int most = -1;
+  for (const RunSnapshot& snapshot : snapshots) {
+    int among = 0;
+    for (std::size_t i = 0; i < snapshot.position.size(); ++i) {
+      const Vec2& p = snapshot.position[i];
+      among += snapshot.state[i] != BodyState::gone &&
+               (!zoom || (p.x() >= zoom->x_min && p.x() <= zoom->x_max));
+    }
+    if (among >= most) most = among, busiest = &snapshot;
+  }
   {
     Scene scene = base_scene(run, last, options);
     scene.field = {"eta", "m", last.eta};
@@ -112,8 +127,8 @@ std::vector<std::string> render_run(const std::string& run_directory, const Pict
     save(scene, dir / "velocity.png");
   }
   {
-    Scene scene = base_scene(run, last, options);
-    scene.field = {"|u|", "m/s", speed_field(last.u, last.v)};
+    Scene scene = base_scene(run, *busiest, options);
+    scene.field = {"|u|", "m/s", speed_field(busiest->u, busiest->v)};
     scene.view = zoom;
     if (zoom)  // widened along x to every body still in the water
       for (int i = 0; i < scene.bodies.size(); ++i) {
@@ -128,11 +143,8 @@ std::vector<std::string> render_run(const std::string& run_directory, const Pict
   if (options.frames) {
     // One colour scale for the whole series: the largest speed of all outputs.
     double top = 0.0;
-    std::vector<RunSnapshot> snapshots;
-    for (const auto& file : states) {
-      snapshots.push_back(read_run_snapshot(file.string()));
-      for (double s : speed_field(snapshots.back().u, snapshots.back().v)) top = std::max(top, s);
-    }
+    for (const RunSnapshot& snapshot : snapshots)
+      for (double speed : speed_field(snapshot.u, snapshot.v)) top = std::max(top, speed);
     fs::create_directories(dir / "frames");
     for (std::size_t k = 0; k < snapshots.size(); ++k) {
       Scene scene = base_scene(run, snapshots[k], options);

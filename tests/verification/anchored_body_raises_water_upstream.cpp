@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
@@ -101,9 +102,13 @@ TEST(AnchoredBodyRaisesWaterUpstream, RiseGrowsWithBlockageAndBalancesTheDrag) {
   const double rise_half = half.upstream_eta - free_flow.upstream_eta;        // [m]
   EXPECT_GT(rise_quarter, 0.0);
   EXPECT_GT(rise_half, 1.5 * rise_quarter);  // drag ~ blocked width: about twice the rise
+  std::printf("upstream rise %.4f m (5 m blocked), %.4f m (10 m blocked)\n", rise_quarter,
+              rise_half);
   for (const Result& r : {quarter, half}) {
     const double held = r.momentum_drop - free_flow.momentum_drop;  // [N]
     EXPECT_NEAR(held, r.reaction, 0.15 * r.reaction);
+    std::printf("momentum held %.1f N, exchanged %.1f N: %.1f %%\n", held, r.reaction,
+                100 * std::abs(held / r.reaction - 1));
   }
 }
 
