@@ -98,6 +98,7 @@ BoundaryConditions resolve_boundary_conditions(const Mesh& mesh, const FlowConfi
   std::vector<int> best_rank(n_nodes, 0), best_condition(n_nodes, -1);
   std::vector<std::vector<Vec2>> wall_normals(n_nodes);
   std::vector<Vec2> discharge_normal(n_nodes, Vec2::Zero());
+  std::vector<Vec2> elevation_normal(n_nodes, Vec2::Zero());
   std::vector<int> elevation_condition(mesh.vertex_count, -1);
   for (int b = 0; b < static_cast<int>(mesh.boundary.size()); ++b) {
     const auto& edge = mesh.boundary[b];
@@ -109,6 +110,7 @@ BoundaryConditions resolve_boundary_conditions(const Mesh& mesh, const FlowConfi
       for (int k = 0; k < 2; ++k) elevation_condition[nodes[k]] = group_elevation[edge.group];
     if (kind == Kind::elevation) {
       for (int k = 0; k < 2; ++k) elevation_condition[nodes[k]] = condition;
+      for (int k = 0; k < 3; ++k) elevation_normal[nodes[k]] += edge_normal(mesh, edge, xi[k]);
       continue;
     }
     if (kind == Kind::discharge || kind == Kind::velocity) bc.open_edges.push_back({b, condition});
@@ -156,6 +158,12 @@ BoundaryConditions resolve_boundary_conditions(const Mesh& mesh, const FlowConfi
         break;
       }
       default:
+        // Elevation boundary only: no tangential velocity, u . t = 0 (the direction held at
+        // zero is the tangent t = k x n; the normal velocity stays free).
+        if (elevation_normal[node] != Vec2::Zero()) {
+          const Vec2 n = elevation_normal[node].normalized();
+          bc.slip_nodes.push_back({node, Vec2(-n.y(), n.x())});
+        }
         break;
     }
   }

@@ -21,6 +21,8 @@
 //   (10) + <q, H u . n> on discharge and velocity boundaries (open_boundary_flux); nothing on
 //        walls (no flux), elevation boundaries carry Dirichlet rows.
 //   (11) = (q, S_source)
+//  on elevation boundaries (ShallowWaterSolver::assemble_inflow_stabilisation):
+//   (12) + <w, - beta (u . n)_- u>, (x)_- = min(x, 0), beta = 1/2         inflow stabilisation
 #include <Eigen/Dense>
 #include <array>
 #include <functional>

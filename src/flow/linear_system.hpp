@@ -37,6 +37,10 @@ class LinearSystem {
   /// Adds a local matrix and vector. Elements of one colour (element_colours) may be added
   /// concurrently: they share no node, so they touch no common entry.
   void add(const std::array<int, 15>& rows, const LocalMatrix& K, const LocalVector& F);
+  /// Adds `value` to A(row, column), an entry of the pattern (serial use only).
+  void add_entry(int row, int column, double value) {
+    A.valuePtr()[position(row, column)] += value;
+  }
 
   /// Replaces Dirichlet row `slot` (index into dirichlet_rows of setup) by x_row = value.
   void set_dirichlet(int slot, double value);

@@ -10,9 +10,6 @@
 
 namespace flotsam {
 
-// [elements] below which a colour is assembled serially: thread start-up costs more than it saves.
-constexpr size_t parallel_threshold = 512;
-
 ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
                                        FlowSolverOptions options)
     : mesh_(mesh),
@@ -63,6 +60,13 @@ void ShallowWaterSolver::setup_system() {
   elevation_group_.clear();
   for (const auto& n : bc_.elevation_nodes)
     elevation_group_.push_back(mesh_.find_group(case_.flow.boundaries[n.condition].group));
+  elevation_edges_.clear();
+  for (int b = 0; b < static_cast<int>(mesh_.boundary.size()); ++b) {
+    const int condition = bc_.group_condition[mesh_.boundary[b].group];
+    if (condition >= 0 &&
+        case_.flow.boundaries[condition].kind == BoundaryCondition::Kind::elevation)
+      elevation_edges_.push_back(b);
+  }
   mid_vertices_.assign(mesh_.node_count(), {-1, -1});
   for (const auto& el : mesh_.elements)
     for (int k = 0; k < 3; ++k) mid_vertices_[el[3 + k]] = {el[k], el[(k + 1) % 3]};
@@ -135,54 +139,64 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
   system_.set_zero();
   const FlowState& k = linearisation_;
   const FlowState& n = previous_;
+  const auto assemble_one = [&](int e) {
+    const auto& el = mesh_.elements[e];
+    ElementValues ev;
+    compute_element_values(mesh_, e, ev);
+    ElementState s;
+    for (int a = 0; a < 6; ++a) {
+      s.u_k[a] = k.u[el[a]];
+      s.v_k[a] = k.v[el[a]];
+      s.u_n[a] = n.u[el[a]];
+      s.v_n[a] = n.v[el[a]];
+      s.z_b[a] = z_b_[el[a]];
+      s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
+    }
+    for (int j = 0; j < 3; ++j) {
+      s.eta_k[j] = k.eta[el[j]];
+      s.eta_n[j] = n.eta[el[j]];
+    }
+    if (!element_forces_.empty()) s.element_force = element_forces_[e];
+    if (flow.turbulence != TurbulenceModel::none) {
+      ElementFlowAverage avg;
+      for (int q = 0; q < triangle_point_count; ++q)
+        for (int b = 0; b < 6; ++b) {
+          const Vec2 ub(s.u_k[b], s.v_k[b]);
+          const double w = ev.JxW[q];
+          avg.u += w * ev.N2[q][b] * ub;
+          avg.grad_u += w * ub * ev.dN2[q][b].transpose();
+          avg.H -= w * ev.N2[q][b] * s.z_b[b];
+          if (b < 3) avg.H += w * ev.N1[q][b] * s.eta_k[b];
+        }
+      double A = 0.0;
+      for (int q = 0; q < triangle_point_count; ++q) A += ev.JxW[q];
+      avg.u /= A;
+      avg.grad_u /= A;
+      avg.H /= A;
+      avg.area = A;
+      nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p.friction,
+                                         avg);  // (M-3)
+    }
+    s.nu_e = flow.viscosity + nu_t_[e];  // (M-3)
+    LocalMatrix K;
+    LocalVector F;
+    assemble_element(p, ev, s, K, F);
+    system_.add(system_.element_rows(mesh_, e), K, F);
+  };
+  // Small colours run serially outside any OpenMP construct: even a parallel region with a false
+  // if-clause keeps the idle threads spinning, which on a loaded machine slowed small cases 10-20x.
+  const size_t parallel_threshold = static_cast<size_t>(std::max(options_.parallel_min_colour, 1));
   for (const auto& colour : colours_) {
-#pragma omp parallel for schedule(static) if (colour.size() >= parallel_threshold)
-    for (size_t idx = 0; idx < colour.size(); ++idx) {
-      const int e = colour[idx];
-      const auto& el = mesh_.elements[e];
-      ElementValues ev;
-      compute_element_values(mesh_, e, ev);
-      ElementState s;
-      for (int a = 0; a < 6; ++a) {
-        s.u_k[a] = k.u[el[a]];
-        s.v_k[a] = k.v[el[a]];
-        s.u_n[a] = n.u[el[a]];
-        s.v_n[a] = n.v[el[a]];
-        s.z_b[a] = z_b_[el[a]];
-        s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
-      }
-      for (int j = 0; j < 3; ++j) {
-        s.eta_k[j] = k.eta[el[j]];
-        s.eta_n[j] = n.eta[el[j]];
-      }
-      if (!element_forces_.empty()) s.element_force = element_forces_[e];
-      if (flow.turbulence != TurbulenceModel::none) {
-        ElementFlowAverage avg;
-        for (int q = 0; q < triangle_point_count; ++q)
-          for (int b = 0; b < 6; ++b) {
-            const Vec2 ub(s.u_k[b], s.v_k[b]);
-            const double w = ev.JxW[q];
-            avg.u += w * ev.N2[q][b] * ub;
-            avg.grad_u += w * ub * ev.dN2[q][b].transpose();
-            avg.H -= w * ev.N2[q][b] * s.z_b[b];
-            if (b < 3) avg.H += w * ev.N1[q][b] * s.eta_k[b];
-          }
-        double A = 0.0;
-        for (int q = 0; q < triangle_point_count; ++q) A += ev.JxW[q];
-        avg.u /= A;
-        avg.grad_u /= A;
-        avg.H /= A;
-        avg.area = A;
-        nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p.friction,
-                                           avg);  // (M-3)
-      }
-      s.nu_e = flow.viscosity + nu_t_[e];  // (M-3)
-      LocalMatrix K;
-      LocalVector F;
-      assemble_element(p, ev, s, K, F);
-      system_.add(system_.element_rows(mesh_, e), K, F);
+    const int count = static_cast<int>(colour.size());
+    if (colour.size() >= parallel_threshold) {
+#pragma omp parallel for schedule(static)
+      for (int idx = 0; idx < count; ++idx) assemble_one(colour[idx]);
+    } else {
+      for (int idx = 0; idx < count; ++idx) assemble_one(colour[idx]);
     }
   }
+
+  assemble_inflow_stabilisation();
 
   // Term (10) on discharge and velocity boundaries: the outflow, known, to the right-hand side.
   std::fill(open_flux_.begin(), open_flux_.end(), 0.0);
@@ -205,6 +219,45 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     for (int m = 0; m < 2; ++m) {
       open_flux_[edge.group] += flux[m];
       system_.b[system_.eta_row(ev.nodes[m])] -= flux[m];  // (10)
+    }
+  }
+}
+
+// Term (12), inflow (backflow) stabilisation on elevation boundaries, where the velocity is free:
+//   + <w, f(u)>,  f(u) = - beta (u . n)_- u,  (x)_- = min(x, 0), beta = 1/2,
+// on the momentum rows, Newton-linearised about u^k like the other terms:
+//   f(u) ~ f(u^k) + f'(u^k) (u - u^k),  f'(u^k) = - beta ((u^k . n)_- I + u^k n^T) (inflow).
+// Where water enters through a natural boundary, the advection term carries kinetic energy
+// (1/2) |u|^2 (u . n) in that no boundary data controls, and the inflow velocity grows node by
+// node until the run fails; this term takes that energy flux out (Bazilevs et al. 2009;
+// Moghadam et al. 2011). It vanishes for outflow and at rest (well balanced), and acts on
+// momentum only (the water balance is unchanged).
+void ShallowWaterSolver::assemble_inflow_stabilisation() {
+  constexpr double beta = 0.5;  // [-]
+  EdgeValues ev;
+  for (int b : elevation_edges_) {
+    compute_edge_values(mesh_, mesh_.boundary[b], ev);
+    for (int q = 0; q < edge_point_count; ++q) {
+      Vec2 u_k = Vec2::Zero();
+      for (int m = 0; m < 3; ++m)
+        u_k += ev.N2[q][m] * Vec2(linearisation_.u[ev.nodes[m]], linearisation_.v[ev.nodes[m]]);
+      const Vec2& n = ev.normal[q];
+      const double inflow = u_k.dot(n);  // [m/s]
+      if (inflow >= 0.0) continue;
+      const Mat2 jacobian = -beta * (inflow * Mat2::Identity() + u_k * n.transpose());  // f'
+      const Vec2 rhs = -beta * inflow * u_k;  // f'(u^k) u^k - f(u^k) [m^2 s^-2]
+      for (int a = 0; a < 3; ++a) {
+        const double w = ev.N2[q][a] * ev.ds[q];
+        const int ra[2] = {LinearSystem::u_row(ev.nodes[a]), LinearSystem::v_row(ev.nodes[a])};
+        system_.b[ra[0]] += w * rhs.x();
+        system_.b[ra[1]] += w * rhs.y();
+        for (int c = 0; c < 3; ++c) {
+          const int rc[2] = {LinearSystem::u_row(ev.nodes[c]), LinearSystem::v_row(ev.nodes[c])};
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+              system_.add_entry(ra[i], rc[j], w * ev.N2[q][c] * jacobian(i, j));  // (12)
+        }
+      }
     }
   }
 }

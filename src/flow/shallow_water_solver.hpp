@@ -30,8 +30,11 @@ struct FlowSolverOptions {
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
   double steady_initial_dt = 0.0;     // [s] first pseudo time step; 0: 10 h_min / sqrt(g H_max)
   double steady_max_dt_factor = 1e4;  // [-] pseudo step cap, in units of the first one
-  BedFunction bed;                    // overrides the case's bed when set (tests)
-  SourceFunction source;              // manufactured source terms when set (tests)
+  // [elements] colours smaller than this are assembled serially: starting threads costs more
+  // than it saves on a few hundred elements.
+  int parallel_min_colour = 512;
+  BedFunction bed;        // overrides the case's bed when set (tests)
+  SourceFunction source;  // manufactured source terms when set (tests)
 };
 
 struct StepReport {
@@ -68,6 +71,7 @@ class ShallowWaterSolver {
   /// Body forces per unit mass [m s^-2] applied from the next step on (two-way coupling):
   /// per element (constant on it) and per P2 node (interpolated). Empty: none.
   void set_element_forces(std::vector<Vec2> forces) { element_forces_ = std::move(forces); }
+  const std::vector<Vec2>& element_forces() const { return element_forces_; }
   void set_node_forces(std::vector<Vec2> forces) { node_forces_ = std::move(forces); }
 
   // ---- fields ----
@@ -82,6 +86,8 @@ class ShallowWaterSolver {
   std::vector<double> vorticity() const;                               // dv/dx - du/dy [1/s] P2
   const std::vector<double>& eddy_viscosity() const { return nu_t_; }  // nu_t [m^2/s] per element
   const WaterBalance& water_balance() const { return balance_; }
+  /// Puts back the balance of a checkpoint (a restarted run continues its sums).
+  void restore_water_balance(const WaterBalance& balance) { balance_ = balance; }
   double volume() const;  // [m^3]
   const Mesh& mesh() const { return mesh_; }
   const Case& flow_case() const { return case_; }
@@ -93,6 +99,7 @@ class ShallowWaterSolver {
   };
   void setup_system();
   void assemble_system(const Iteration& it);
+  void assemble_inflow_stabilisation();
   void apply_boundary_conditions(const Iteration& it);
   void set_boundary_velocities(double t);
   Eigen::VectorXd solve();
@@ -115,8 +122,9 @@ class ShallowWaterSolver {
   std::vector<double> nu_t_;       // [m^2/s] per element
   std::vector<double> lumped_p1_;  // [m^2] integral of each P1 basis function
   std::vector<Vec2> element_forces_, node_forces_;
-  std::vector<double> open_flux_;                 // [m^3/s] term (10) per mesh group, last assembly
-  std::vector<int> elevation_group_;              // per elevation node: its mesh group
+  std::vector<double> open_flux_;     // [m^3/s] term (10) per mesh group, last assembly
+  std::vector<int> elevation_group_;  // per elevation node: its mesh group
+  std::vector<int> elevation_edges_;  // boundary edges of groups with an elevation alone
   std::vector<std::array<int, 2>> mid_vertices_;  // per P2 node >= vertex_count: edge ends
   double bed_volume_ = 0.0;                       // integral of z_b [m^3]
   double H_mean_ = 1.0;                           // [m] initial mean depth (residual scaling)

@@ -1,0 +1,207 @@
+// The flow engine on the paper's channel (spec 8.2, examples/bridge_piers.yaml): a timed harness
+// (not Google Benchmark's loop: one run is seconds to minutes). Figures: docs/performance.md
+// "Flow engine".
+//
+//   cmake --build <build> --target bench_flow_channel
+//   <build>/bench/bench_flow_channel steady [mesh_size]
+//   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file]
+//   <build>/bench/bench_flow_channel compare STATE_A STATE_B
+//   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
+//
+// steady: solve_steady from still water, wall time and residual history. unsteady: T_END [s]
+// (default 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time,
+// time per step, Newton iterations; writes the final state to state_file when given. compare:
+// max |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B and the same for |u| of two
+// saved states of the same mesh. scaling: STEPS steps at DT (default 1 s) on the channel with
+// far-field size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step
+// and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
+// FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
+// KLU instead of UMFPACK (scaling).
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "flow/shallow_water_solver.hpp"
+#include "io/case_file.hpp"
+#include "mesh/interpolation.hpp"
+#include "mesh/mesh_generator.hpp"
+#include "mesh/point_locator.hpp"
+
+namespace flotsam {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+Case channel_case(double mesh_size) {
+  Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
+  if (mesh_size > 0.0) {
+    const double scale = mesh_size / c.mesh.channel.mesh_size;
+    c.mesh.channel.mesh_size = mesh_size;
+    c.mesh.channel.pier_mesh_size *= scale;
+  }
+  return c;
+}
+
+void write_state(const std::string& path, const FlowState& s) {
+  std::ofstream out(path, std::ios::binary);
+  const auto write = [&](const std::vector<double>& v) {
+    const size_t n = v.size();
+    out.write(reinterpret_cast<const char*>(&n), sizeof n);
+    out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * 8));
+  };
+  write(s.eta);
+  write(s.u);
+  write(s.v);
+}
+
+FlowState read_state(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const auto read = [&](std::vector<double>& v) {
+    size_t n = 0;
+    in.read(reinterpret_cast<char*>(&n), sizeof n);
+    v.resize(n);
+    in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * 8));
+  };
+  FlowState s;
+  read(s.eta);
+  read(s.u);
+  read(s.v);
+  return s;
+}
+
+// generate_mesh leaves the process at one OpenMP thread (Gmsh's General.NumThreads = 1): restore.
+Mesh channel_mesh(const Case& c) {
+  const int threads = omp_get_max_threads();
+  Mesh mesh = generate_mesh(c.mesh);
+  omp_set_num_threads(threads);
+  return mesh;
+}
+
+int run_steady(double mesh_size) {
+  const Case c = channel_case(mesh_size);
+  const Mesh mesh = channel_mesh(c);
+  ShallowWaterSolver solver(mesh, c);
+  const auto start = Clock::now();
+  solver.initialize();
+  const SteadyReport report = solver.solve_steady();
+  const double wall = seconds_since(start);
+  std::printf("steady: %d elements, %d threads, converged %d after %d iterations, %.3f s wall\n",
+              mesh.element_count(), omp_get_max_threads(), report.converged ? 1 : 0,
+              report.iterations, wall);
+  for (size_t k = 0; k < report.residuals.size(); ++k)
+    std::printf("  %zu %.3e\n", k, report.residuals[k]);
+  std::printf("peak memory %.1f MiB\n", peak_memory_mib());
+  return report.converged ? 0 : 1;
+}
+
+int run_unsteady(double dt, double t_end, double mesh_size, const std::string& state_file) {
+  const Case c = channel_case(mesh_size);
+  const Mesh mesh = channel_mesh(c);
+  FlowSolverOptions options;
+  if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
+  ShallowWaterSolver solver(mesh, c, options);
+  const auto start = Clock::now();
+  solver.initialize();
+  const int steps = static_cast<int>(std::lround(t_end / dt));
+  long iterations = 0;
+  for (int n = 0; n < steps; ++n) iterations += solver.step(dt).iterations;
+  const double wall = seconds_since(start);
+  std::printf(
+      "unsteady: %d elements, %d threads, dt %g s, %d steps to t = %g s: %.2f s wall, %.2f ms "
+      "per step, %.2f Newton iterations per step, balance %.2e, peak memory %.1f MiB\n",
+      mesh.element_count(), omp_get_max_threads(), dt, steps, solver.time(), wall,
+      1e3 * wall / steps, static_cast<double>(iterations) / steps,
+      solver.water_balance().relative_error(), peak_memory_mib());
+  if (!state_file.empty()) write_state(state_file, solver.state());
+  return 0;
+}
+
+int run_compare(const std::string& a_file, const std::string& b_file) {
+  const FlowState a = read_state(a_file), b = read_state(b_file);
+  const double eta_out = 9.8;  // [m] the outflow level of examples/bridge_piers.yaml
+  double d_eta = 0.0, m_eta = 0.0, d_u = 0.0, m_u = 0.0;
+  for (size_t j = 0; j < b.eta.size(); ++j) {
+    d_eta = std::max(d_eta, std::abs(a.eta[j] - b.eta[j]));
+    m_eta = std::max(m_eta, std::abs(b.eta[j] - eta_out));
+  }
+  for (size_t i = 0; i < b.u.size(); ++i) {
+    const double speed_a = std::hypot(a.u[i], a.v[i]), speed_b = std::hypot(b.u[i], b.v[i]);
+    d_u = std::max(d_u, std::abs(speed_a - speed_b));
+    m_u = std::max(m_u, speed_b);
+  }
+  std::printf("eta - eta_out: max difference %.3e m of max %.3e m (%.3f %%)\n", d_eta, m_eta,
+              100 * d_eta / m_eta);
+  std::printf("|u|: max difference %.3e m/s of max %.3e m/s (%.3f %%)\n", d_u, m_u,
+              100 * d_u / m_u);
+  return 0;
+}
+
+int run_scaling(double mesh_size, int steps, double dt) {
+  Case c = channel_case(mesh_size);
+  c.mesh.channel.refine_distance *= mesh_size / 14.5;
+  const auto mesh_start = Clock::now();
+  const Mesh mesh = channel_mesh(c);
+  const double mesh_wall = seconds_since(mesh_start);
+  FlowSolverOptions options;
+  const char* kind = std::getenv("FLOTSAM_FLOW_SOLVER");
+  if (kind && std::string(kind) == "klu") options.linear_solver = LinearSolverKind::klu;
+  ShallowWaterSolver solver(mesh, c, options);
+  const auto setup_start = Clock::now();
+  solver.initialize();
+  const double setup_wall = seconds_since(setup_start);
+  solver.step(dt);  // the first step holds the symbolic analysis
+  const auto start = Clock::now();
+  long iterations = 0;
+  for (int n = 0; n < steps; ++n) iterations += solver.step(dt).iterations;
+  const double wall = seconds_since(start);
+  std::printf(
+      "scaling: mesh_size %g m, %d elements, %d unknowns, %d threads: mesh %.2f s, setup %.2f s, "
+      "%.1f ms per step (%.2f iterations per step), peak memory %.1f MiB\n",
+      mesh_size, mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count,
+      omp_get_max_threads(), mesh_wall, setup_wall, 1e3 * wall / steps,
+      static_cast<double>(iterations) / steps, peak_memory_mib());
+  return 0;
+}
+
+}  // namespace
+}  // namespace flotsam
+
+int main(int argc, char** argv) {
+  using namespace flotsam;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const auto number = [&](size_t k, double fallback) {
+    return args.size() > k ? std::atof(args[k].c_str()) : fallback;
+  };
+  try {
+    if (!args.empty() && args[0] == "steady") return run_steady(number(1, 0.0));
+    if (args.size() >= 2 && args[0] == "unsteady")
+      return run_unsteady(number(1, 1.0), number(2, 3600.0), number(3, 0.0),
+                          args.size() > 4 ? args[4] : "");
+    if (args.size() >= 3 && args[0] == "compare") return run_compare(args[1], args[2]);
+    if (args.size() >= 3 && args[0] == "scaling")
+      return run_scaling(number(1, 14.5), static_cast<int>(number(2, 10)), number(3, 1.0));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  std::fprintf(stderr, "usage: see the comment at the top of bench/flow_channel.cpp\n");
+  return 1;
+}
