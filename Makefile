@@ -45,7 +45,8 @@ test-slow: build
 test-sanitize: deps
 	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFLOTSAM_SANITIZE=ON $(CMAKE_FLAGS)
 	cmake --build $(SAN_BUILD) -j $(JOBS)
-	ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
+	LSAN_OPTIONS=suppressions=$(CURDIR)/cmake/lsan.supp \
+	    ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
 # The paper's bridge case, run and drawn into out/bridge_piers/. The demo replaces its own
 # earlier results there (--overwrite); nothing else in out/ is touched.

@@ -46,18 +46,18 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
                                          balance_columns(), true);
 }
 
-void RunOutput::write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
-                      const std::vector<std::uint8_t>& jammed) {
-  write_flow(flow);
-  if (with_bodies) write_bodies(bodies, flow.time());
-  write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), flow.time(),
+void RunOutput::write(double t, const ShallowWaterSolver& flow, const BodySet& bodies,
+                      bool with_bodies, const std::vector<std::uint8_t>& jammed) {
+  write_flow(t, flow);
+  if (with_bodies) write_bodies(bodies, t);
+  write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), t,
                      flow.eta(), flow.u(), flow.v(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
-  balance_->row({flow.time(), b.volume, b.outflow, b.error(), b.relative_error()});
-  times_.push_back(flow.time());
+  balance_->row({t, b.volume, b.outflow, b.error(), b.relative_error()});
+  times_.push_back(t);
 }
 
-void RunOutput::write_flow(const ShallowWaterSolver& flow) {
+void RunOutput::write_flow(double t, const ShallowWaterSolver& flow) {
   const Mesh& mesh = flow.mesh();
   const std::vector<double> H = flow.depth(), vorticity = flow.vorticity();
   std::vector<Vec2> u(mesh.node_count());
@@ -75,8 +75,8 @@ void RunOutput::write_flow(const ShallowWaterSolver& flow) {
   fields.add_point_scalar("vorticity [1/s]", vorticity);
   fields.add_cell_scalar("nu_t [m^2/s]", flow.eddy_viscosity());
   const std::string file = fmt::format("flow_{:06d}.vtu", count());
-  write_vtu((directory_ / file).string(), mesh, fields, flow.time());
-  flow_index_.add(flow.time(), file);
+  write_vtu((directory_ / file).string(), mesh, fields, t);
+  flow_index_.add(t, file);
 }
 
 void RunOutput::write_bodies(const BodySet& bodies, double t) {

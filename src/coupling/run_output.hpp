@@ -33,9 +33,10 @@ class RunOutput {
   RunOutput(const std::filesystem::path& directory, const std::string& name,
             const std::vector<double>& times, bool with_bodies);
 
-  /// Writes output number `index_` at the solver's current time.
+  /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
+  /// stays at its steady state's).
   /// `jammed`: one flag per body (bodies in a jam, spec 6.3), or empty.
-  void write(const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
+  void write(double t, const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
              const std::vector<std::uint8_t>& jammed);
 
   /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
@@ -47,7 +48,7 @@ class RunOutput {
   const std::vector<double>& times() const { return times_; }  // [s] of each output so far
 
  private:
-  void write_flow(const ShallowWaterSolver& flow);
+  void write_flow(double t, const ShallowWaterSolver& flow);
   void write_bodies(const BodySet& bodies, double t);
 
   std::filesystem::path directory_;

@@ -71,6 +71,7 @@ class Simulation {
   const ContactWorld& contacts() const { return *contacts_; }
 
  private:
+  void solve_frozen_flow();
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void apply_reaction();

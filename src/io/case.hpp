@@ -63,8 +63,10 @@ struct TimeConfig {
   double end = 3600.0;  // [s] simulated time
   double step = 0.1;    // flow step dt [s]
   CouplingMode mode = CouplingMode::two_way;
-  double steady_tolerance = 1e-8;  // steady/frozen mode: relative residual to stop at [-]
-  int steady_max_iterations = 500;
+  double steady_tolerance = 1e-8;   // steady/frozen mode: relative residual to stop at [-]
+  int steady_max_iterations = 100;  // then frozen mode marches in time to the steady state
+  double spin_up_step = 20.0;       // [s] flow step of that march
+  double spin_up_end = 14400.0;     // [s] longest march before the run stops
 };
 
 // ---- bodies -------------------------------------------------------------------------------

@@ -159,6 +159,8 @@ TimeConfig read_time(const YamlMap& m) {
   time.steady_tolerance = m.number("steady_tolerance", time.steady_tolerance, Range::positive());
   time.steady_max_iterations = static_cast<int>(
       m.integer("steady_max_iterations", time.steady_max_iterations, Range::between(1, 1e9)));
+  time.spin_up_step = m.number("spin_up_step", time.spin_up_step, Range::positive());
+  time.spin_up_end = m.number("spin_up_end", time.spin_up_end, Range::positive());
   return time;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gmsh.h>
 
+#include <omp.h>
+
 #include <exception>
 
 namespace flotsam {
@@ -14,7 +16,7 @@ std::mutex& gmsh_mutex() {
 
 }  // namespace
 
-GmshSession::GmshSession() : lock_(gmsh_mutex()) {
+GmshSession::GmshSession() : lock_(gmsh_mutex()), omp_threads_(omp_get_max_threads()) {
   // No command-line arguments, no user configuration files: the same input gives the same mesh.
   gmsh::initialize(0, nullptr, false);
   gmsh::option::setNumber("General.Terminal", 0);      // no output on the terminal
@@ -30,6 +32,7 @@ GmshSession::~GmshSession() {
     gmsh::finalize();
   } catch (...) {  // a destructor must not throw; Gmsh's state is reset by the next initialize
   }
+  omp_set_num_threads(omp_threads_);  // General.NumThreads = 1 set the whole process's count
 }
 
 std::string current_gmsh_error() {

@@ -18,6 +18,7 @@ class GmshSession {
 
  private:
   std::unique_lock<std::mutex> lock_;
+  int omp_threads_;  // OpenMP's thread count before the session: Gmsh sets its own, restored
 };
 
 /// Text of the exception being handled, for use inside a catch block around Gmsh calls (Gmsh

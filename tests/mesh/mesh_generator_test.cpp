@@ -3,6 +3,7 @@
 // analytically, generation is deterministic, and bad geometries are errors naming the culprit.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_summary.hpp"
 #include "mesh/msh_reader.hpp"
@@ -244,6 +246,20 @@ TEST(MeshGenerator, BadPolygonsAreErrorsNamingTheSides) {
 TEST(MeshGenerator, UnwritableMshPathIsAnErrorNamingIt) {
   const std::string path = "/nonexistent_folder_flotsam/mesh.msh";
   EXPECT_THAT(error_of(small_channel(), path), HasSubstr(path));
+}
+
+}  // namespace
+}  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// Gmsh sets the process's OpenMP thread count (General.NumThreads = 1); the session restores it,
+// so that the flow assembly after meshing still runs on every core.
+TEST(GmshSession, RestoresTheOpenMpThreadCount) {
+  omp_set_num_threads(2);
+  { GmshSession session; }
+  EXPECT_EQ(omp_get_max_threads(), 2);
 }
 
 }  // namespace
