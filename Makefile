@@ -66,10 +66,10 @@ bench: build
 	    $(BUILD)/flotsam run examples/$$c.yaml -o $(BUILD)/bench_runs/$$c --overwrite -q \
 	    | grep -E "simulated|wall time"; done
 
-format:
+format: deps
 	find src tests bench -name '*.[ch]pp' | xargs clang-format -i
 
-format-check:
+format-check: deps
 	find src tests bench -name '*.[ch]pp' | xargs clang-format --dry-run -Werror
 
 clean:

@@ -114,7 +114,7 @@ TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
   int lines = 0;
   std::string last;
   for (std::string line; std::getline(csv, line);) ++lines, last = line;
-  EXPECT_EQ(lines, 1 + 4);  // header + one body at four times
+  EXPECT_EQ(lines, 1 + 4);                       // header + one body at four times
   EXPECT_TRUE(last.starts_with("10,")) << last;  // the run's time, though the flow is frozen
   Simulation again(
       c, channel_mesh(),
