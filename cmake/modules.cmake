@@ -19,6 +19,10 @@ endfunction()
 # Each tests/FOLDER/*.cpp is compiled into one GoogleTest executable test_FOLDER, labelled
 # "unit" (the sanitizer build runs these), or "verification" for tests/verification. A file whose first lines hold "// ctest-label: slow"
 # goes into its own executable labelled "slow", out of the default `make test`.
+# Tests run two at a time on two cores: OpenMP threads that wait by spinning would take the
+# other test's core (a 10 s test became 100 s), so waiting threads sleep instead.
+set(test_environment "OMP_WAIT_POLICY=PASSIVE")
+
 function(flotsam_test_folder folder)
   file(GLOB files CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${folder}/*.cpp)
   set(fast "")
@@ -28,7 +32,8 @@ function(flotsam_test_folder folder)
     if(head MATCHES "ctest-label: slow")
       add_executable(slow_${stem} ${f})
       target_link_libraries(slow_${stem} PRIVATE flotsam_options ${ARGN} GTest::gtest_main GTest::gmock)
-      gtest_discover_tests(slow_${stem} PROPERTIES LABELS "slow" DISCOVERY_TIMEOUT 60)
+      gtest_discover_tests(slow_${stem} PROPERTIES LABELS "slow" ENVIRONMENT ${test_environment}
+                           DISCOVERY_TIMEOUT 60)
     else()
       list(APPEND fast ${f})
     endif()
@@ -41,6 +46,7 @@ function(flotsam_test_folder folder)
     else()
       set(kind "unit")
     endif()
-    gtest_discover_tests(test_${folder} PROPERTIES LABELS "${kind}" DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(test_${folder} PROPERTIES LABELS "${kind}"
+                         ENVIRONMENT ${test_environment} DISCOVERY_TIMEOUT 60)
   endif()
 endfunction()

@@ -7,7 +7,7 @@ function(flotsam_cli_test name exit regex)
            COMMAND ${CMAKE_COMMAND} "-DCOMMAND=$<TARGET_FILE:flotsam>;${ARGN}"
                    -DEXPECT_EXIT=${exit} "-DEXPECT_REGEX=${regex}" -DWORKDIR=${cli_work}
                    -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
-  set_tests_properties(cli.${name} PROPERTIES LABELS "cli")
+  set_tests_properties(cli.${name} PROPERTIES LABELS "cli" ENVIRONMENT "${test_environment}")
 endfunction()
 
 set(examples ${PROJECT_SOURCE_DIR}/examples)
