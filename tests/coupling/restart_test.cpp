@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/straight_channel.hpp"
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -19,18 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 
 Case restart_case(double end) {
-  Case c;
-  c.name = "restart";
-  c.mesh.kind = MeshSource::Kind::file;
+  Case c = test::straight_channel_case("restart", 40.0, 2.0);
   c.flow.viscosity = 0.01;
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;
-  c.flow.boundaries = {
-      {BoundaryCondition::Kind::discharge, "left", TimeSeries(40.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
   c.time = {.end = end, .step = 1.0, .mode = CouplingMode::two_way};
   c.output.interval = 4.0;
   for (int k = 0; k < 3; ++k) {  // three logs that collide: the middle one is slow

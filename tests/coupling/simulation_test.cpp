@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -26,16 +27,8 @@ Mesh channel_mesh() {
 }
 
 Case channel_case(CouplingMode mode) {
-  Case c;
-  c.name = "channel";
-  c.mesh.kind = MeshSource::Kind::file;  // the mesh is given in memory: no channel geometry
+  Case c = test::straight_channel_case("channel", Q, H0);
   c.flow.viscosity = 1e-6;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = H0;
-  c.flow.boundaries = {
-      {BoundaryCondition::Kind::discharge, "left", TimeSeries(Q), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::elevation, "right", TimeSeries(H0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
   c.time.mode = mode;
   c.time.step = 1.0;
   c.time.end = 60.0;

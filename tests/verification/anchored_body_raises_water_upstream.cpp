@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
 #include "mesh/interpolation.hpp"
@@ -27,18 +28,10 @@ namespace {
 constexpr double length = 300.0, width = 20.0, H0 = 2.0, Q = 30.0;  // [m], [m], [m], [m^3/s]
 
 Case channel(double blocked_width) {
-  Case c;
-  c.name = "anchored";
-  c.mesh.kind = MeshSource::Kind::file;
+  Case c = test::straight_channel_case("anchored", Q, H0);
   c.flow.viscosity = 0.05;
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.02;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = H0;
-  c.flow.boundaries = {
-      {BoundaryCondition::Kind::discharge, "left", TimeSeries(Q), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::elevation, "right", TimeSeries(H0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
   c.time = {.end = 600.0, .step = 5.0, .mode = CouplingMode::two_way};
   c.bodies.physics.drag_law = DragLaw::constant;
   c.bodies.physics.drag_coefficient = 1.2;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -14,18 +15,10 @@ namespace flotsam {
 namespace {
 
 TEST(TwoWayMomentumExchange, ReactionOnTheWaterIsMinusTheForceOnTheBodies) {
-  Case c;
-  c.name = "momentum";
-  c.mesh.kind = MeshSource::Kind::file;
+  Case c = test::straight_channel_case("momentum", 40.0, 2.0);
   c.flow.viscosity = 0.01;
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;
-  c.flow.boundaries = {
-      {BoundaryCondition::Kind::discharge, "left", TimeSeries(40.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
-      {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
   c.time = {.end = 20.0, .step = 1.0, .mode = CouplingMode::two_way};
   // Logs of several sizes and angles, one of them across several elements, one smaller than an
   // element (its reaction goes to the element holding its centre).
