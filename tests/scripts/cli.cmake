@@ -41,7 +41,7 @@ foreach(picture water_surface velocity bodies frames/frame_000002)
            COMMAND ${FLOTSAM_VTK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_png.py
                    ${cli_work}/tiny_run/${picture}.png 640 320)
   set_tests_properties(cli.png_${test_name} PROPERTIES FIXTURES_REQUIRED cli_tiny_pictures
-                       LABELS "cli")
+                       FIXTURES_SETUP cli_tiny_checked LABELS "cli")
 endforeach()
 flotsam_cli_test(render_not_a_run nonzero "is not a flotsam run folder" render .)
 
@@ -53,3 +53,14 @@ set_tests_properties(cli.run_tiny_first_half PROPERTIES FIXTURES_SETUP cli_tiny_
 flotsam_cli_test(run_tiny_restart 0 "simulated +4.0 s"
                  run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_restart --restart -q)
 set_tests_properties(cli.run_tiny_restart PROPERTIES FIXTURES_REQUIRED cli_tiny_half)
+
+# With ffmpeg on the machine (not a dependency: `flotsam render` uses it when present), the
+# frames also become a movie.
+find_program(FLOTSAM_FFMPEG ffmpeg)
+if(FLOTSAM_FFMPEG)
+  flotsam_cli_test(render_tiny_movie 0 "wrote tiny_run/movie.mp4"
+                   render tiny_run --width 320 --height 160)
+  # after the picture checks: it draws the same pictures again, at another size
+  set_tests_properties(cli.render_tiny_movie PROPERTIES FIXTURES_REQUIRED
+                       "cli_tiny_pictures;cli_tiny_checked")
+endif()
