@@ -20,9 +20,6 @@
 namespace flotsam {
 namespace {
 
-constexpr double push = 0.2;     // [m s^-2] force per unit mass along +x, as the jam test
-constexpr double dt_max = 0.02;  // [s]
-
 // About 50 logs per gap between two piers, the rows packed (no free space between them).
 JamScene packed_scene(int logs) {
   JamSceneSpec spec;
@@ -32,42 +29,19 @@ JamScene packed_scene(int logs) {
   return make_jam_scene(spec);
 }
 
-// The jam test's step: semi-implicit Euler with the l/4 rule, then the contact stage.
-void move_bodies(BodySet& b) {
-  double dt = dt_max;
-  for (int i = 0; i < b.size(); ++i) {
-    const double speed = (b.velocity[i] + Vec2(push * dt_max, 0.0)).norm() +
-                         std::abs(b.angular_velocity[i]) * 0.5 * b.length[i];  // [m/s]
-    if (speed > 0.0) dt = std::min(dt, 0.25 * b.width[i] / speed);
-  }
-  for (int i = 0; i < b.size(); ++i) {
-    b.velocity[i].x() += push * dt;
-    b.position[i] += dt * b.velocity[i];
-    b.angle[i] += dt * b.angular_velocity[i];
-  }
-}
-
-void contact_config(ContactConfig& config) {
-  config.restitution = 0.3;
-  config.iterations = 200;
-  config.position_iterations = 20;
-}
-
 void BM_ContactStep(benchmark::State& state) {
   JamScene scene = packed_scene(static_cast<int>(state.range(0)));
-  ContactConfig config;
-  contact_config(config);
-  ContactWorld world(config);
+  ContactWorld world(jam_contact_config());
   for (int k = 0; k < 20; ++k) {  // warm-up: the first contacts, the sweep order
-    move_bodies(scene.bodies);
-    world.step(scene.bodies, scene.walls, dt_max);
+    const double dt = move_jam_logs(scene);
+    world.step(scene.bodies, scene.walls, dt);
   }
   ContactProfile total;
   for (auto _ : state) {
     state.PauseTiming();
-    move_bodies(scene.bodies);
+    const double dt = move_jam_logs(scene);  // the jam test's step
     state.ResumeTiming();
-    world.step(scene.bodies, scene.walls, dt_max);
+    world.step(scene.bodies, scene.walls, dt);
     const ContactProfile& p = world.profile();
     total.boxes += p.boxes, total.broad_phase += p.broad_phase;
     total.narrow_phase += p.narrow_phase, total.solve += p.solve, total.positions += p.positions;

@@ -1,5 +1,7 @@
 #include "contact/jam_scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -53,6 +55,30 @@ JamScene make_jam_scene(const JamSceneSpec& spec) {
     }
   }
   return scene;
+}
+
+ContactConfig jam_contact_config() {
+  ContactConfig config;
+  config.restitution = 0.3;
+  config.iterations = 200;
+  config.position_iterations = 20;
+  return config;
+}
+
+double move_jam_logs(JamScene& scene) {
+  BodySet& b = scene.bodies;
+  double dt = jam_max_step;
+  for (int i = 0; i < b.size(); ++i) {
+    const double speed = (b.velocity[i] + Vec2(jam_push * jam_max_step, 0.0)).norm() +
+                         std::abs(b.angular_velocity[i]) * 0.5 * b.length[i];  // [m/s]
+    if (speed > 0.0) dt = std::min(dt, 0.25 * b.width[i] / speed);
+  }
+  for (int i = 0; i < b.size(); ++i) {
+    b.velocity[i].x() += jam_push * dt;
+    b.position[i] += dt * b.velocity[i];
+    b.angle[i] += dt * b.angular_velocity[i];
+  }
+  return dt;
 }
 
 }  // namespace flotsam

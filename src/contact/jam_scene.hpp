@@ -15,6 +15,7 @@
 // A constant force along +x on each log stands in for the drag of the flow.
 #include "bodies/body_set.hpp"
 #include "contact/boundary_segments.hpp"
+#include "io/case.hpp"
 
 namespace flotsam {
 
@@ -38,5 +39,16 @@ struct JamScene {
 };
 
 JamScene make_jam_scene(const JamSceneSpec& spec);
+
+constexpr double jam_push = 0.2;  // [m s^-2] force per unit mass along +x (the drag's stand-in)
+constexpr double jam_max_step = 0.02;  // [s] longest step of the scene
+
+/// The contacts of the scene: a little restitution, and sweeps enough for a column of 50 logs.
+ContactConfig jam_contact_config();
+
+/// Moves the logs one step under the push, semi-implicit Euler, the step limited as the body
+/// integrator limits its sub-steps (spec 3.5: no point of a body moves more than l/4); returns
+/// the step [s]. The caller then applies the contact stage over that interval.
+double move_jam_logs(JamScene& scene);
 
 }  // namespace flotsam

@@ -14,25 +14,11 @@
 namespace flotsam {
 namespace {
 
-constexpr double push = 0.2;     // [m s^-2] force per unit mass along +x
-constexpr double dt_max = 0.02;  // [s]
-
-// Semi-implicit Euler with the body integrator's sub-step limit (spec 3.5): no point of a body
-// moves more than l/4 in a step. Then the contact stage, over the interval just taken.
+// The scene's step (move_jam_logs: the body integrator's l/4 limit), then the contact stage
+// over the interval just taken.
 void advance(JamScene& scene, ContactWorld& world) {
-  BodySet& b = scene.bodies;
-  double dt = dt_max;
-  for (int i = 0; i < b.size(); ++i) {
-    const double speed = (b.velocity[i] + Vec2(push * dt_max, 0.0)).norm() +
-                         std::abs(b.angular_velocity[i]) * 0.5 * b.length[i];  // [m/s]
-    if (speed > 0.0) dt = std::min(dt, 0.25 * b.width[i] / speed);
-  }
-  for (int i = 0; i < b.size(); ++i) {
-    b.velocity[i].x() += push * dt;
-    b.position[i] += dt * b.velocity[i];
-    b.angle[i] += dt * b.angular_velocity[i];
-  }
-  world.step(b, scene.walls, dt);
+  const double dt = move_jam_logs(scene);
+  world.step(scene.bodies, scene.walls, dt);
 }
 
 struct State {
@@ -63,11 +49,7 @@ TEST(LogJamAtPiers, FiftyLogsComeToRestAgainstTwoPiersAndStay) {
   JamSceneSpec spec;
   JamScene scene = make_jam_scene(spec);
   ASSERT_EQ(scene.bodies.size(), 50);
-  ContactConfig config;
-  config.restitution = 0.3;
-  config.iterations = 200;
-  config.position_iterations = 20;
-  ContactWorld world(config);
+  ContactWorld world(jam_contact_config());
 
   const double width = scene.bodies.width[0];  // l [m]
   // Settling: at most 6,000 steps (120 s), until 200 consecutive steps are all under 1e-4 m/s.
