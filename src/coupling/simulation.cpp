@@ -92,22 +92,13 @@ void Simulation::solve_frozen_flow() {
       case_.time.spin_up_step);
   flow_->initialize();  // from the initial state again, not from where the solve stopped
   constexpr double settled = 1e-5;  // largest change of u in one step / largest u [-]
-  double change = 1.0;
-  while (change > settled) {
-    if (flow_->time() >= case_.time.spin_up_end)
-      throw_run_error(
-          "frozen mode: the flow still changes by {:.3g} of its largest velocity per step after "
-          "{} s of marching (time.spin_up_end); raise it or check the case",
-          change, flow_->time());
-    const std::vector<double> u0 = flow_->u(), v0 = flow_->v();
-    flow_->step(case_.time.spin_up_step);
-    double du = 0.0, u_max = 0.0;
-    for (std::size_t n = 0; n < u0.size(); ++n) {
-      du = std::max(du, std::hypot(flow_->u()[n] - u0[n], flow_->v()[n] - v0[n]));
-      u_max = std::max(u_max, std::hypot(flow_->u()[n], flow_->v()[n]));
-    }
-    change = u_max > 0.0 ? du / u_max : 0.0;
-  }
+  const double change =
+      flow_->march_to_steady(case_.time.spin_up_step, settled, case_.time.spin_up_end);
+  if (change > settled)
+    throw_run_error(
+        "frozen mode: the flow still changes by {:.3g} of its largest velocity per step after "
+        "{} s of marching (time.spin_up_end); raise it or check the case",
+        change, flow_->time());
   spdlog::info("steady flow by marching: change {:.3g} per step at t = {} s", change,
                flow_->time());
   FlowState steady_state = flow_->state();

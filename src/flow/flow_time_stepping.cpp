@@ -219,4 +219,19 @@ void ShallowWaterSolver::check_state(const FlowState& s, double t) const {
   }
 }
 
+double ShallowWaterSolver::march_to_steady(double dt, double settled, double t_max) {
+  double change = 1.0;  // [-] max |u^{n+1} - u^n| / max |u^{n+1}|
+  while (change > settled && state_.time < t_max) {
+    const FlowState before = state_;
+    step(dt);
+    double du = 0.0, u_max = 0.0;
+    for (std::size_t n = 0; n < before.u.size(); ++n) {
+      du = std::max(du, std::hypot(state_.u[n] - before.u[n], state_.v[n] - before.v[n]));
+      u_max = std::max(u_max, std::hypot(state_.u[n], state_.v[n]));
+    }
+    change = u_max > 0.0 ? du / u_max : 0.0;
+  }
+  return change;
+}
+
 }  // namespace flotsam

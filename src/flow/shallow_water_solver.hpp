@@ -67,6 +67,11 @@ class ShallowWaterSolver {
   /// with a growing pseudo step, i.e. Newton's method for the steady equations in the limit),
   /// until the relative residual is below TimeConfig::steady_tolerance.
   SteadyReport solve_steady();
+  /// The other road to a steady state, when solve_steady cannot take it (a long channel whose
+  /// pseudo steps follow its slow transient): steps of dt [s] until the largest change of the
+  /// velocity in one step is at most `settled` times the largest velocity, or until time
+  /// t_max [s]. Returns that relative change of the last step [-].
+  double march_to_steady(double dt, double settled, double t_max);
 
   /// Body forces per unit mass [m s^-2] applied from the next step on (two-way coupling):
   /// per element (constant on it) and per P2 node (interpolated). Empty: none.

@@ -12,7 +12,6 @@
 // the velocity changes by less than 1e-5 of its maximum per step: solve_steady does not converge
 // on this case (docs/validation.md). About two minutes: labelled slow.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,22 +40,10 @@ double max_speed(const ShallowWaterSolver& solver, int* where = nullptr) {
 
 TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
   const Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
-  const int threads = omp_get_max_threads();
   const Mesh mesh = generate_mesh(c.mesh);
-  omp_set_num_threads(threads);  // Gmsh leaves the process at one thread
   ShallowWaterSolver solver(mesh, c);
   solver.initialize();
-
-  const double dt = 20.0;  // [s]
-  double change = 1.0;     // [-] max |u^{n+1} - u^n| / max |u| of the last step
-  while (solver.time() < 7200.0 && change > 1e-5) {
-    const std::vector<double> u = solver.u(), v = solver.v();
-    solver.step(dt);
-    double du = 0.0;
-    for (size_t i = 0; i < u.size(); ++i)
-      du = std::max(du, std::hypot(solver.u()[i] - u[i], solver.v()[i] - v[i]));
-    change = du / max_speed(solver);
-  }
+  const double change = solver.march_to_steady(20.0, 1e-5, 7200.0);  // dt 20 s, up to 2 h
   ASSERT_LE(change, 1e-5) << "not steady at t = " << solver.time();
 
   const ChannelGeometry& channel = c.mesh.channel;
