@@ -31,13 +31,15 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
     const double JxW = ev.JxW[q];
 
     // The two states at the quadrature point. G(i, j) = d u_i / d x_j.
-    Vec2 u_k = Vec2::Zero(), u_n = Vec2::Zero(), force = s.element_force, visc_n = Vec2::Zero();
+    Vec2 u_k = Vec2::Zero(), u_n = Vec2::Zero(), u_d = Vec2::Zero(), force = s.element_force,
+         visc_n = Vec2::Zero();
     Mat2 G_k = Mat2::Zero(), G_n = Mat2::Zero();
     double z_b = 0.0;
     for (int b = 0; b < 6; ++b) {
       const Vec2 ub_k(s.u_k[b], s.v_k[b]), ub_n(s.u_n[b], s.v_n[b]);
       u_k += N[b] * ub_k;
       u_n += N[b] * ub_n;
+      u_d += N[b] * Vec2(s.u_d[b], s.v_d[b]);
       G_k += ub_k * dN[b].transpose();
       G_n += ub_n * dN[b].transpose();
       z_b += N[b] * s.z_b[b];
@@ -64,8 +66,10 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       force += src.momentum;
       S = src.continuity;
     }
-    const double tau = p.supg ? supg_tau(p.inv_dt, speed, nu, gamma, h) : 0.0;
-    const Vec2 advection_k = G_k * u_k, advection_n = G_n * u_n;
+    // With characteristics the advection is done (u_d); here only the Eulerian form has it.
+    const double adv = p.characteristics ? 0.0 : 1.0;
+    const double tau = p.supg && !p.characteristics ? supg_tau(p.inv_dt, speed, nu, gamma, h) : 0.0;
+    const Vec2 advection_k = adv * G_k * u_k, advection_n = adv * G_n * u_n;
     const Mat2 strain_n = G_n + G_n.transpose();
     const Vec2 coriolis_n(-u_n.y(), u_n.x());  // k x u^n
 
@@ -76,14 +80,14 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       for (int c = 0; c < 2; ++c) {
         const int row = local_velocity(a, c);
         for (int b = 0; b < 6; ++b) {
-          const double transport = s_a * (N[b] * p.inv_dt + th * u_k.dot(dN[b]));  // (1), (2)
+          const double transport = s_a * (N[b] * p.inv_dt + adv * th * u_k.dot(dN[b]));  // (1) (2)
           const double grad_ab = dN[a].dot(dN[b]);
           const double lap_b = ev.hessian2[b].trace();
           for (int d = 0; d < 2; ++d) {
             const double delta = c == d ? 1.0 : 0.0;
             double k = delta * (transport + s_a * gamma * N[b]);          // (1) (2) (5)
             k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];                // (5)
-            k += th * N[a] * N[b] * G_k(c, d);                            // (2)
+            k += adv * th * N[a] * N[b] * G_k(c, d);                      // (2)
             k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);       // (4)
             k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
             k += th * f * s_a * N[b] *
@@ -95,7 +99,7 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
         }
         for (int j = 0; j < 3; ++j)
           K(row, local_elevation(j)) += th * g * s_a * dM[j][c] * JxW;        // (3)
-        double rhs = s_a * u_n[c] * p.inv_dt;                                 // (1)
+        double rhs = s_a * u_d[c] * p.inv_dt;                                 // (1)
         rhs += th * N[a] * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
         rhs -= (1 - th) * g * s_a * grad_eta_n[c];                            // (3)
         rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                    // (4)

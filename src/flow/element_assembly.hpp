@@ -5,7 +5,10 @@
 // iterate), test functions w (P2, plus the SUPG part tau (u^k . grad) w) and q (P1):
 //
 //  momentum (M-1a), for all w:
-//    (1) (w, (u - u^n)/dt)                                          time
+//    (1) (w, (u - u_d)/dt)                                          time; u_d = u^n, or the
+//                                                                   departure values u^n(X) of
+//                                                                   the characteristics, which
+//                                                                   then replace (2) and SUPG
 //    (2) theta (w, (u^k.grad)u + (u.grad)u^k - (u^k.grad)u^k)       advection, Newton
 //        + (1-theta) (w, (u^n.grad)u^n)
 //    (3) g (w, grad(theta eta + (1-theta) eta^n))                   surface slope (not by parts:
@@ -60,6 +63,9 @@ struct AssemblyParameters {
   Vec2 wind_stress = Vec2::Zero();  // (rho_air/rho) C_w |W| W [m^2 s^-2]; F_wind = this / H
   FrictionModel friction;
   bool supg = true;
+  // Advection by characteristics (characteristics.hpp): terms (2) and SUPG are left out and the
+  // time term (1) starts from the departure values u_d instead of u^n.
+  bool characteristics = false;
   double source_time = 0.0;  // t^{n+theta} [s], where the source function is evaluated
   const SourceFunction* source = nullptr;
 };
@@ -67,6 +73,8 @@ struct AssemblyParameters {
 /// The nodal values of one element.
 struct ElementState {
   std::array<double, 6> u_k, v_k, u_n, v_n;  // [m/s] at the linearisation point, at t^n
+  std::array<double, 6> u_d, v_d;            // [m/s] time term's start: u^n, or its departure
+                                             // values with characteristics
   std::array<double, 3> eta_k, eta_n;        // [m]
   std::array<double, 6> z_b;                 // [m] P2 bed
   std::array<Vec2, 6> node_force;            // [m s^-2] per-node body force

@@ -29,13 +29,16 @@ StepReport ShallowWaterSolver::step(double dt) {
   previous_ = state_;
   const double t_new = previous_.time + dt;
   const double theta = options_.theta;
-  const Iteration it{theta, 1.0 / dt, t_new, previous_.time + theta * dt};
+  const bool characteristics = options_.advection == Advection::characteristics;
+  const Iteration it{theta, 1.0 / dt, t_new, previous_.time + theta * dt, characteristics};
+  if (characteristics)  // the advection stage of the fractional step
+    characteristics_->advect(previous_.u, previous_.v, dt, u_departure_, v_departure_);
   const double u_scale = 1e-3 * std::sqrt(case_.flow.gravity * H_mean_);  // [m/s]
   StepReport report;
   Eigen::VectorXd x;
   try {
     for (report.iterations = 1; report.iterations <= options_.max_iterations; ++report.iterations) {
-      set_boundary_velocities(t_new);
+      set_boundary_velocities(it);
       linearisation_ = state_;
       assemble_system(it);
       apply_boundary_conditions(it);
@@ -80,10 +83,10 @@ SteadyReport ShallowWaterSolver::solve_steady() {
   for (int k = 0; k < case_.time.steady_max_iterations; ++k) {
     // A backward-Euler pseudo step from the current state: at its first iterate the time term
     // vanishes, so b - A x is the steady residual.
-    set_boundary_velocities(t);
+    set_boundary_velocities(Iteration{1.0, 0.0, t, t, false});
     previous_ = state_;
     linearisation_ = state_;
-    const Iteration it{1.0, 1.0 / dt, t, t};
+    const Iteration it{1.0, 1.0 / dt, t, t, false};  // the steady equations are Eulerian
     assemble_system(it);
     apply_boundary_conditions(it);
     const double r = residual_norm(pack(state_));
@@ -127,10 +130,12 @@ double ShallowWaterSolver::residual_norm(const Eigen::VectorXd& x) const {
   return r.norm();
 }
 
-// Boundary velocities at t: velocity and zero nodes take their value; discharge nodes
-// u_i = -n_i c sqrt(H_i), with c = Q / I and I = sum over the group's edges of
-// <H^k, sum_m N_m sqrt(H_m) n_m . n>, so that term (10) carries exactly the outflow -Q.
-void ShallowWaterSolver::set_boundary_velocities(double t) {
+// Boundary velocities at t^{n+1}: velocity and zero nodes take their value; discharge nodes
+// u_i = -n_i c sqrt(H_i), with I = sum over the group's edges of <H^k, sum_m N_m sqrt(H_m)
+// n_m . n> and c chosen so that term (10), theta c I + (1 - theta) <H^n u^n . n>, carries exactly
+// the theta-weighted discharge theta Q(t^{n+1}) + (1 - theta) Q(t^n) in.
+void ShallowWaterSolver::set_boundary_velocities(const Iteration& it) {
+  const double t = it.t_new, th = it.theta;
   const auto& conditions = case_.flow.boundaries;
   auto node_depth = [&](int node) {
     if (node < mesh_.vertex_count) return state_.eta[node] - z_b_[node];
@@ -139,21 +144,27 @@ void ShallowWaterSolver::set_boundary_velocities(double t) {
   };
   std::vector<Vec2> normal(mesh_.node_count(), Vec2::Zero());
   for (const auto& n : bc_.velocity_nodes) normal[n.node] = n.normal;
-  std::vector<double> integral(conditions.size(), 0.0);
+  std::vector<double> integral(conditions.size(), 0.0), flux_n(conditions.size(), 0.0);
   EdgeValues ev;
   for (const auto& open : bc_.open_edges) {
     if (conditions[open.condition].kind != BoundaryCondition::Kind::discharge) continue;
     compute_edge_values(mesh_, mesh_.boundary[open.boundary_edge], ev);
     for (int q = 0; q < edge_point_count; ++q) {
       double H = ev.N1[q][0] * state_.eta[ev.nodes[0]] + ev.N1[q][1] * state_.eta[ev.nodes[1]];
+      double H_n =
+          ev.N1[q][0] * previous_.eta[ev.nodes[0]] + ev.N1[q][1] * previous_.eta[ev.nodes[1]];
       double U_n = 0.0;
+      Vec2 u_n = Vec2::Zero();
       for (int m = 0; m < 3; ++m) {
         const int node = ev.nodes[m];
         H -= ev.N2[q][m] * z_b_[node];
+        H_n -= ev.N2[q][m] * z_b_[node];
+        u_n += ev.N2[q][m] * Vec2(previous_.u[node], previous_.v[node]);
         U_n += ev.N2[q][m] * std::sqrt(std::max(node_depth(node), 0.0)) *
                normal[node].dot(ev.normal[q]);
       }
       integral[open.condition] += H * U_n * ev.ds[q];
+      flux_n[open.condition] -= H_n * u_n.dot(ev.normal[q]) * ev.ds[q];  // [m^3/s] in
     }
   }
   for (const auto& n : bc_.velocity_nodes) {
@@ -161,7 +172,10 @@ void ShallowWaterSolver::set_boundary_velocities(double t) {
     if (n.kind == VelocityNode::Kind::velocity) {
       u_b = Vec2(conditions[n.condition].value(t), conditions[n.condition].value_y(t));
     } else if (n.kind == VelocityNode::Kind::discharge) {
-      const double c = conditions[n.condition].value(t) / integral[n.condition];
+      const auto& Q = conditions[n.condition];
+      const double Q_in =
+          th * Q.value(t) + (1 - th) * (Q.value(previous_.time) - flux_n[n.condition]);
+      const double c = Q_in / (th * integral[n.condition]);
       u_b = -n.normal * c * std::sqrt(std::max(node_depth(n.node), 0.0));
     }
     state_.u[n.node] = u_b.x();

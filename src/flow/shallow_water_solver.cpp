@@ -55,6 +55,7 @@ void ShallowWaterSolver::setup_system() {
   for (const auto& n : bc_.slip_nodes) slip_nodes.push_back(n.node);
   system_.setup(mesh_, dirichlet_rows, slip_nodes);
   colours_ = element_colours(mesh_);
+  if (options_.advection == Advection::characteristics) characteristics_.emplace(mesh_);
   nu_t_.assign(mesh_.element_count(), 0.0);
   open_flux_.assign(mesh_.group_names.size(), 0.0);
   elevation_group_.clear();
@@ -133,6 +134,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
                   flow.wind;  // (M-2) wind, times H
   p.friction = FrictionModel::from(flow);
   p.supg = options_.supg;
+  p.characteristics = it.characteristics;
   p.source_time = it.t_source;
   p.source = options_.source ? &options_.source : nullptr;
 
@@ -149,6 +151,8 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
       s.v_k[a] = k.v[el[a]];
       s.u_n[a] = n.u[el[a]];
       s.v_n[a] = n.v[el[a]];
+      s.u_d[a] = p.characteristics ? u_departure_[el[a]] : s.u_n[a];
+      s.v_d[a] = p.characteristics ? v_departure_[el[a]] : s.v_n[a];
       s.z_b[a] = z_b_[el[a]];
       s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
     }
@@ -196,7 +200,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     }
   }
 
-  assemble_inflow_stabilisation();
+  if (!it.characteristics) assemble_inflow_stabilisation();
 
   // Term (10) on discharge and velocity boundaries: the outflow, known, to the right-hand side.
   std::fill(open_flux_.begin(), open_flux_.end(), 0.0);

@@ -7,11 +7,13 @@
 //
 // Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
 // -> solve] per iteration -> check_state; step() and solve_steady() call them in order.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "flow/bed.hpp"
 #include "flow/boundary_conditions.hpp"
+#include "flow/characteristics.hpp"
 #include "flow/element_assembly.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/linear_system.hpp"
@@ -21,12 +23,21 @@
 
 namespace flotsam {
 
+/// How the advection term of (M-1a) is discretised.
+enum class Advection {
+  characteristics,  // fractional step: characteristics, then one implicit (u, eta) system
+  supg,             // Eulerian, SUPG-stabilised, inside the Newton iterations
+};
+
 /// Numerical choices of the engine (not physics: those are in FlowConfig).
 struct FlowSolverOptions {
-  double theta = 0.6;                 // [-] 0.5: Crank-Nicolson (no damping), 1: backward Euler
-  int max_iterations = 3;             // Newton iterations per step
+  double theta = 0.6;  // [-] 0.5: Crank-Nicolson (no damping), 1: backward Euler
+  Advection advection = Advection::characteristics;
+  // Newton iterations per step. With characteristics one is the semi-implicit scheme: the
+  // (u, eta) system linearised about t^n (friction, depth in the flux); SUPG needs about three.
+  int max_iterations = 1;
   double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
-  bool supg = true;                   // SUPG stabilisation of advection
+  bool supg = true;                   // SUPG stabilisation of advection (Advection::supg)
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
   double steady_initial_dt = 0.0;     // [s] first pseudo time step; 0: 10 h_min / sqrt(g H_max)
   double steady_max_dt_factor = 1e4;  // [-] pseudo step cap, in units of the first one
@@ -101,12 +112,13 @@ class ShallowWaterSolver {
  private:
   struct Iteration {  // the linearised problem of one iteration
     double theta, inv_dt, t_new, t_source;
+    bool characteristics;  // advection done by characteristics (u_departure_), else Eulerian
   };
   void setup_system();
   void assemble_system(const Iteration& it);
   void assemble_inflow_stabilisation();
   void apply_boundary_conditions(const Iteration& it);
-  void set_boundary_velocities(double t);
+  void set_boundary_velocities(const Iteration& it);
   Eigen::VectorXd solve();
   void unpack(const Eigen::VectorXd& x);
   Eigen::VectorXd pack(const FlowState& s) const;
@@ -122,6 +134,8 @@ class ShallowWaterSolver {
   LinearSystem system_;
   SparseDirectSolver solver_;
   std::vector<std::vector<int>> colours_;
+  std::optional<Characteristics> characteristics_;
+  std::vector<double> u_departure_, v_departure_;  // [m/s] per P2 node: u^n at the path's foot
 
   std::vector<double> z_b_;        // [m] per P2 node
   std::vector<double> nu_t_;       // [m^2/s] per element

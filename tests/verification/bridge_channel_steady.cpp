@@ -8,9 +8,12 @@
 //   - the discharge integral of H u_x over every cross-section x = const is the inflow within 0.5%;
 //   - no flow through the walls: the integral of |H u . n| over each pier is below 0.5% of Q;
 //   - the fastest flow is in the bridges' gaps (|x - x_bridge| <= pier radius).
-// The steady state is reached by time-marching from still water (dt = 20 s, theta = 0.6) until
-// the velocity changes by less than 1e-5 of its maximum per step: solve_steady does not converge
-// on this case (docs/validation.md). About two minutes: labelled slow.
+// The steady state is sought by time-marching from still water (dt = 20 s, theta = 0.6, the
+// default characteristics scheme) until the velocity changes by less than 1e-5 of its maximum per
+// step; the case's viscosity is raised to Re = 20 on the pier diameter, because at the paper's
+// Re = 1000 the piers shed eddies and no steady state exists. Status (docs/validation.md): the
+// march stalls at a change of 1.8e-3 per step; the other checks are reported all the same.
+// About two minutes: labelled slow.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,12 +42,15 @@ double max_speed(const ShallowWaterSolver& solver, int* where = nullptr) {
 }
 
 TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
-  const Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
+  Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
+  // At the case's Re = 1000 the piers shed eddies (the paper's Fig. 16): no steady state exists.
+  // At Re = 20 on the pier diameter the wakes are steady: nu = U D / Re = 0.5 * 60 / 20.
+  c.flow.viscosity = 1.5;  // [m^2/s]
   const Mesh mesh = generate_mesh(c.mesh);
   ShallowWaterSolver solver(mesh, c);
   solver.initialize();
   const double change = solver.march_to_steady(20.0, 1e-5, 7200.0);  // dt 20 s, up to 2 h
-  ASSERT_LE(change, 1e-5) << "not steady at t = " << solver.time();
+  EXPECT_LE(change, 1e-5) << "not steady at t = " << solver.time();
 
   const ChannelGeometry& channel = c.mesh.channel;
   const double L = channel.length, B = channel.width;  // [m]
