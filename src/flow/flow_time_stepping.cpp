@@ -83,10 +83,10 @@ SteadyReport ShallowWaterSolver::solve_steady() {
   for (int k = 0; k < case_.time.steady_max_iterations; ++k) {
     // A backward-Euler pseudo step from the current state: at its first iterate the time term
     // vanishes, so b - A x is the steady residual.
-    set_boundary_velocities(Iteration{1.0, 0.0, t, t, false});
+    const Iteration it{1.0, 1.0 / dt, t, t, false};  // the steady equations are Eulerian
+    set_boundary_velocities(it);
     previous_ = state_;
     linearisation_ = state_;
-    const Iteration it{1.0, 1.0 / dt, t, t, false};  // the steady equations are Eulerian
     assemble_system(it);
     apply_boundary_conditions(it);
     const double r = residual_norm(pack(state_));
@@ -151,21 +151,24 @@ void ShallowWaterSolver::set_boundary_velocities(const Iteration& it) {
     compute_edge_values(mesh_, mesh_.boundary[open.boundary_edge], ev);
     for (int q = 0; q < edge_point_count; ++q) {
       double H = ev.N1[q][0] * state_.eta[ev.nodes[0]] + ev.N1[q][1] * state_.eta[ev.nodes[1]];
-      double H_n =
-          ev.N1[q][0] * previous_.eta[ev.nodes[0]] + ev.N1[q][1] * previous_.eta[ev.nodes[1]];
       double U_n = 0.0;
-      Vec2 u_n = Vec2::Zero();
       for (int m = 0; m < 3; ++m) {
         const int node = ev.nodes[m];
         H -= ev.N2[q][m] * z_b_[node];
-        H_n -= ev.N2[q][m] * z_b_[node];
-        u_n += ev.N2[q][m] * Vec2(previous_.u[node], previous_.v[node]);
         U_n += ev.N2[q][m] * std::sqrt(std::max(node_depth(node), 0.0)) *
                normal[node].dot(ev.normal[q]);
       }
       integral[open.condition] += H * U_n * ev.ds[q];
-      flux_n[open.condition] -= H_n * u_n.dot(ev.normal[q]) * ev.ds[q];  // [m^3/s] in
     }
+    // The outflow <H^n u^n . n> of t^n, as term (10) computes it (theta = 0 selects it).
+    EdgeState s;
+    for (int m = 0; m < 3; ++m) {
+      s.z_b[m] = z_b_[ev.nodes[m]];
+      s.u_n[m] = s.u_new[m] = Vec2(previous_.u[ev.nodes[m]], previous_.v[ev.nodes[m]]);
+      if (m < 2) s.eta_n[m] = s.eta_k[m] = previous_.eta[ev.nodes[m]];
+    }
+    const auto outflow = open_boundary_flux(0.0, ev, s);
+    flux_n[open.condition] -= outflow[0] + outflow[1];  // [m^3/s] in
   }
   for (const auto& n : bc_.velocity_nodes) {
     Vec2 u_b = Vec2::Zero();

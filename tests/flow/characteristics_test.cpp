@@ -1,11 +1,10 @@
 // Advection by characteristics (src/flow/characteristics.hpp) in the stagnation-point flow
 // u = (c (x - x0), -c (y - y0)): a path through x over dt started at X = x0 + (x - x0) e^{-c dt},
 // Y = y0 + (y - y0) e^{c dt}, and since u is linear its P2 interpolation is exact, so the
-// departure values are u_d = (c (X - x0), -c (Y - y0)) up to the midpoint rule's error (sub-steps
-// of half an element: error about 4 (c dt/4)^3/6 ~ 1e-4 relative per path here, up to 1.5e-4
-// of c L near the edges the paths come in through; tolerance 3e-4
-// of the largest velocity). Nodes whose path starts outside the
-// domain take the velocity where the path leaves it (checked: the foot is in the domain).
+// departure values are u_d = (c (X - x0), -c (Y - y0)) up to the midpoint rule's error: sub-steps
+// of half an element give about 4 (c dt/4)^3/6 ~ 1e-4 relative per path, up to 1.5e-4 of c L near
+// the edges the paths come in through; tolerance 3e-4 of c L. Nodes whose path starts outside
+// the domain take the velocity where the path enters it (checked: within the inflow's range).
 #include <gtest/gtest.h>
 
 #include <cmath>
