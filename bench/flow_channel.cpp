@@ -3,12 +3,13 @@
 // "Flow engine".
 //
 //   cmake --build <build> --target bench_flow_channel
-//   <build>/bench/bench_flow_channel steady [mesh_size]
+//   <build>/bench/bench_flow_channel steady [mesh_size] [viscosity]
 //   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file]
 //   <build>/bench/bench_flow_channel compare STATE_A STATE_B
 //   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
 //
-// steady: solve_steady from still water, wall time and residual history. unsteady: T_END [s]
+// steady: solve_steady from still water (at the case's viscosity, or the one given [m^2/s]; mesh
+// size 0: the case's), wall time and residual history. unsteady: T_END [s]
 // (default 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time,
 // time per step, Newton iterations; writes the final state to state_file when given. compare:
 // max |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B and the same for |u| of two
@@ -95,19 +96,22 @@ Mesh channel_mesh(const Case& c) {
   return mesh;
 }
 
-int run_steady(double mesh_size) {
-  const Case c = channel_case(mesh_size);
+int run_steady(double mesh_size, double viscosity) {
+  Case c = channel_case(mesh_size);
+  if (viscosity > 0.0) c.flow.viscosity = viscosity;
   const Mesh mesh = channel_mesh(c);
   ShallowWaterSolver solver(mesh, c);
   const auto start = Clock::now();
   solver.initialize();
   const SteadyReport report = solver.solve_steady();
   const double wall = seconds_since(start);
-  std::printf("steady: %d elements, %d threads, converged %d after %d iterations, %.3f s wall\n",
-              mesh.element_count(), omp_get_max_threads(), report.converged ? 1 : 0,
-              report.iterations, wall);
+  std::printf(
+      "steady: %d elements, %d threads, nu %g m^2/s: converged %d after %d iterations, %.3f s "
+      "wall; lowest viscosity reached %g m^2/s\n",
+      mesh.element_count(), omp_get_max_threads(), c.flow.viscosity, report.converged ? 1 : 0,
+      report.iterations, wall, report.viscosity);
   for (size_t k = 0; k < report.residuals.size(); ++k)
-    std::printf("  %zu %.3e\n", k, report.residuals[k]);
+    std::printf("  %zu nu %.4g: %.3e\n", k, report.viscosities[k], report.residuals[k]);
   std::printf("peak memory %.1f MiB\n", peak_memory_mib());
   return report.converged ? 0 : 1;
 }
@@ -191,7 +195,7 @@ int main(int argc, char** argv) {
     return args.size() > k ? std::atof(args[k].c_str()) : fallback;
   };
   try {
-    if (!args.empty() && args[0] == "steady") return run_steady(number(1, 0.0));
+    if (!args.empty() && args[0] == "steady") return run_steady(number(1, 0.0), number(2, 0.0));
     if (args.size() >= 2 && args[0] == "unsteady")
       return run_unsteady(number(1, 1.0), number(2, 3600.0), number(3, 0.0),
                           args.size() > 4 ? args[4] : "");

@@ -75,9 +75,10 @@ void Simulation::initialize() {
   write_output_if_due(false);
 }
 
-// Frozen mode's flow: the steady solve, or when it does not converge (a long channel whose
-// pseudo-time steps follow its slow transient), a march in time from the initial state until
-// the flow stops changing. The state found becomes the flow at t = 0, at rest in time.
+// Frozen mode's flow: the steady solve, or when it does not converge (a flow with no steady
+// state at its viscosity, whose continuation stops short of it), a march in time from the
+// initial state until the flow stops changing. The state found becomes the flow at t = 0, at rest
+// in time.
 void Simulation::solve_frozen_flow() {
   const SteadyReport steady = flow_->solve_steady();
   if (steady.converged) {
@@ -86,10 +87,11 @@ void Simulation::solve_frozen_flow() {
     return;
   }
   spdlog::info(
-      "the steady solve stopped at residual {:.3g} after {} iterations; marching in time with "
-      "{} s steps to the steady state instead",
-      steady.residuals.empty() ? 0.0 : steady.residuals.back(), steady.iterations,
-      case_.time.spin_up_step);
+      "the steady solve stopped at residual {:.3g} after {} iterations (lowest viscosity with a "
+      "steady state: {:.3g} m^2/s, case: {:.3g} m^2/s); marching in time with {} s steps to the "
+      "steady state instead",
+      steady.residuals.empty() ? 0.0 : steady.residuals.back(), steady.iterations, steady.viscosity,
+      case_.flow.viscosity, case_.time.spin_up_step);
   flow_->initialize();  // from the initial state again, not from where the solve stopped
   constexpr double settled = 1e-5;  // largest change of u in one step / largest u [-]
   const double change =

@@ -8,11 +8,27 @@ namespace flotsam {
 namespace {
 
 // Stabilisation parameter of SUPG (Tezduyar 1992) for the P2 element, whose node spacing is
-// h = h_e / 2:  tau = ( (2/dt)^2 + (2|a|/h)^2 + (4 nu/h^2)^2 + gamma^2 )^(-1/2).
-double supg_tau(double inv_dt, double speed, double nu, double gamma, double h) {
+// h = h_e / 2:  tau = ( (2/dt)^2 + (2|a|/h)^2 + (4 nu/h^2)^2 + gamma^2 )^(-1/2), and its
+// derivatives for Newton's method: gamma = gamma(|u|, H) ~ |u|, so
+// d tau/du = -tau^3 (4/h^2 + gamma^2/|u|^2) u and d tau/dH = -tau^3 gamma d gamma/dH.
+struct Supg {
+  double tau = 0.0;
+  Vec2 dtau_du = Vec2::Zero();  // [s^2/m]
+  double dtau_dH = 0.0;         // [s/m]
+};
+
+Supg supg_tau(double inv_dt, const Vec2& u, double nu, double gamma, double dgamma_dH, double h) {
+  const double speed = u.norm();
   const double a = 2.0 * inv_dt, b = 2.0 * speed / h, c = 4.0 * nu / (h * h);
   const double sum = a * a + b * b + c * c + gamma * gamma;
-  return sum > 0.0 ? 1.0 / std::sqrt(sum) : 0.0;
+  if (sum <= 0.0) return {};
+  Supg s;
+  s.tau = 1.0 / std::sqrt(sum);
+  const double tau3 = s.tau * s.tau * s.tau;
+  const double friction = speed > 0.0 ? gamma * gamma / (speed * speed) : 0.0;
+  s.dtau_du = -tau3 * (4.0 / (h * h) + friction) * u;
+  s.dtau_dH = -tau3 * gamma * dgamma_dH;
+  return s;
 }
 
 }  // namespace
@@ -32,7 +48,7 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
 
     // The two states at the quadrature point. G(i, j) = d u_i / d x_j.
     Vec2 u_k = Vec2::Zero(), u_n = Vec2::Zero(), u_d = Vec2::Zero(), force = s.element_force,
-         visc_n = Vec2::Zero();
+         visc_k = Vec2::Zero(), visc_n = Vec2::Zero();
     Mat2 G_k = Mat2::Zero(), G_n = Mat2::Zero();
     double z_b = 0.0;
     for (int b = 0; b < 6; ++b) {
@@ -45,13 +61,15 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       z_b += N[b] * s.z_b[b];
       force += N[b] * s.node_force[b];
       // Strong viscous term div(nu (grad u + grad u^T)) = nu (Laplace u + grad div u).
+      visc_k += ev.hessian2[b].trace() * ub_k + ev.hessian2[b] * ub_k;
       visc_n += ev.hessian2[b].trace() * ub_n + ev.hessian2[b] * ub_n;
     }
     double eta_k = 0.0, eta_n = 0.0;
-    Vec2 grad_eta_n = Vec2::Zero();
+    Vec2 grad_eta_k = Vec2::Zero(), grad_eta_n = Vec2::Zero();
     for (int j = 0; j < 3; ++j) {
       eta_k += M[j] * s.eta_k[j];
       eta_n += M[j] * s.eta_n[j];
+      grad_eta_k += s.eta_k[j] * dM[j];
       grad_eta_n += s.eta_n[j] * dM[j];
     }
     const double H_k = eta_k - z_b, H_n = eta_n - z_b;
@@ -60,6 +78,10 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
     const double gamma = p.friction.rate(speed, H_k);  // (M-2) friction, F = - gamma u
     const Vec2 u_hat = speed > 0.0 ? Vec2(u_k / speed) : Vec2::Zero();
     force += p.wind_stress / H_f;  // (M-2) wind
+    // Newton in the depth of (5) and (7): d(gamma u - F_wind)/dH at x^k, times eta - eta^k.
+    const double dgamma_dH = p.friction.rate_depth_derivative(speed, H_k);
+    Vec2 depth_rate = dgamma_dH * u_k;
+    if (H_k > p.friction.min_depth) depth_rate += p.wind_stress / (H_k * H_k);
     double S = 0.0;
     if (p.source) {
       const SourceTerms src = (*p.source)(ev.x[q], p.source_time);
@@ -68,15 +90,27 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
     }
     // With characteristics the advection is done (u_d); here only the Eulerian form has it.
     const double adv = p.characteristics ? 0.0 : 1.0;
-    const double tau = p.supg && !p.characteristics ? supg_tau(p.inv_dt, speed, nu, gamma, h) : 0.0;
+    const Supg supg =
+        p.supg && !p.characteristics ? supg_tau(p.inv_dt, u_k, nu, gamma, dgamma_dH, h) : Supg{};
+    const double tau = supg.tau;
     const Vec2 advection_k = adv * G_k * u_k, advection_n = adv * G_n * u_n;
     const Mat2 strain_n = G_n + G_n.transpose();
-    const Vec2 coriolis_n(-u_n.y(), u_n.x());  // k x u^n
+    const Vec2 coriolis_k(-u_k.y(), u_k.x()), coriolis_n(-u_n.y(), u_n.x());  // k x u
+    // The strong momentum residual at x^k, which SUPG weights: Newton's derivative of the test
+    // function psi = tau (u.grad) w in u and H multiplies it.
+    Vec2 residual_k = Vec2::Zero();
+    if (tau > 0.0)
+      residual_k = (u_k - u_d) * p.inv_dt + th * advection_k + (1 - th) * advection_n +
+                   g * (th * grad_eta_k + (1 - th) * grad_eta_n) + gamma * u_k -
+                   nu * (th * visc_k + (1 - th) * visc_n) +
+                   f * (th * coriolis_k + (1 - th) * coriolis_n) - force;
 
     // Momentum rows: test function s_a = N_a + psi_a (SUPG), component c.
     for (int a = 0; a < 6; ++a) {
       const double psi = tau * u_k.dot(dN[a]);
       const double s_a = N[a] + psi;
+      const Vec2 dpsi_du = tau * dN[a] + u_k.dot(dN[a]) * supg.dtau_du;
+      const double dpsi_dH = u_k.dot(dN[a]) * supg.dtau_dH;
       for (int c = 0; c < 2; ++c) {
         const int row = local_velocity(a, c);
         for (int b = 0; b < 6; ++b) {
@@ -87,26 +121,31 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
             const double delta = c == d ? 1.0 : 0.0;
             double k = delta * (transport + s_a * gamma * N[b]);          // (1) (2) (5)
             k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];                // (5)
-            k += adv * th * N[a] * N[b] * G_k(c, d);                      // (2)
+            k += adv * th * s_a * N[b] * G_k(c, d);                       // (2)
             k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);       // (4)
             k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
             k += th * f * s_a * N[b] *
                  (c == 0 && d == 1   ? -1.0
                   : c == 1 && d == 0 ? 1.0
-                                     : 0.0);  // (6)
+                                     : 0.0);         // (6)
+            k += N[b] * dpsi_du[d] * residual_k[c];  // SUPG, Newton
             K(row, local_velocity(b, d)) += k * JxW;
           }
         }
         for (int j = 0; j < 3; ++j)
-          K(row, local_elevation(j)) += th * g * s_a * dM[j][c] * JxW;        // (3)
-        double rhs = s_a * u_d[c] * p.inv_dt;                                 // (1)
-        rhs += th * N[a] * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
-        rhs -= (1 - th) * g * s_a * grad_eta_n[c];                            // (3)
-        rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                    // (4)
-        rhs += (1 - th) * psi * nu * visc_n[c];                               // (4)
-        rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);                       // (5)
-        rhs -= (1 - th) * f * s_a * coriolis_n[c];                            // (6)
-        rhs += s_a * force[c];                                                // (7)
+          K(row, local_elevation(j)) +=
+              ((th * g * dM[j][c] + depth_rate[c] * M[j]) * s_a + dpsi_dH * residual_k[c] * M[j]) *
+              JxW;                                                           // (3) (5) (7), SUPG
+        double rhs = s_a * u_d[c] * p.inv_dt;                                // (1)
+        rhs += th * s_a * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
+        rhs -= (1 - th) * g * s_a * grad_eta_n[c];                           // (3)
+        rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                   // (4)
+        rhs += (1 - th) * psi * nu * visc_n[c];                              // (4)
+        rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);                      // (5)
+        rhs -= (1 - th) * f * s_a * coriolis_n[c];                           // (6)
+        rhs += s_a * force[c];                                               // (7)
+        rhs += s_a * depth_rate[c] * eta_k;                                  // (5) (7)
+        rhs += (dpsi_du.dot(u_k) + dpsi_dH * eta_k) * residual_k[c];         // SUPG
         F(row) += rhs * JxW;
       }
     }

@@ -1,8 +1,8 @@
-// ShallowWaterSolver: the time step, the steady solve, the boundary velocities, the water balance
-// and the state checks (the outline's run loop; assembly is in shallow_water_solver.cpp).
+// ShallowWaterSolver: the time step, the boundary velocities, the water balance and the state
+// checks (the outline's run loop; assembly is in shallow_water_solver.cpp, the steady state in
+// steady_state.cpp).
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/error.hpp"
 #include "flow/shallow_water_solver.hpp"
@@ -60,74 +60,6 @@ StepReport ShallowWaterSolver::step(double dt) {
   report.iterations = std::min(report.iterations, options_.max_iterations);
   update_balance(it, dt, x);
   return report;
-}
-
-SteadyReport ShallowWaterSolver::solve_steady() {
-  const auto& flow = case_.flow;
-  double dt = options_.steady_initial_dt;
-  if (dt <= 0.0) {
-    double h_min = std::numeric_limits<double>::max(), H_max = 0.0;
-    for (double a : mesh_.area) h_min = std::min(h_min, std::sqrt(2.0 * a));
-    for (int j = 0; j < mesh_.vertex_count; ++j) H_max = std::max(H_max, state_.eta[j] - z_b_[j]);
-    dt = 10.0 * h_min / std::sqrt(flow.gravity * H_max);
-  }
-  const double t = state_.time;
-  SteadyReport report;
-  double r0 = 0.0;
-  int retries = 0;
-  const double dt_0 = dt;
-  // [s] cap of the pseudo step: a little time term keeps the linearised steady problem regular
-  // where it is not (closed basins, whose mean level only the time term fixes; u = 0, where the
-  // friction Jacobian vanishes).
-  const double dt_max = options_.steady_max_dt_factor * dt_0;
-  for (int k = 0; k < case_.time.steady_max_iterations; ++k) {
-    // A backward-Euler pseudo step from the current state: at its first iterate the time term
-    // vanishes, so b - A x is the steady residual.
-    const Iteration it{1.0, 1.0 / dt, t, t, false};  // the steady equations are Eulerian
-    set_boundary_velocities(it);
-    previous_ = state_;
-    linearisation_ = state_;
-    assemble_system(it);
-    apply_boundary_conditions(it);
-    const double r = residual_norm(pack(state_));
-    if (k == 0) r0 = r > 0.0 ? r : 1.0;
-    report.residuals.push_back(r / r0);
-    report.iterations = k;
-    if (r / r0 < case_.time.steady_tolerance) {
-      report.converged = true;
-      break;
-    }
-    const Eigen::VectorXd x = solve();
-    unpack(x);
-    try {
-      check_state(state_, t);
-    } catch (const RunError&) {
-      // Newton went too far from a state far from steady: retry with a smaller pseudo step.
-      state_ = previous_;
-      dt *= 0.25;
-      if (++retries > 20) throw;
-      continue;
-    }
-    record_fluxes(x);
-    // Switched evolution relaxation (Mulder & van Leer 1985): dt grows as the residual falls.
-    dt = std::min(dt_max, std::max(dt, dt_0 * r0 / r));
-  }
-  previous_ = state_;  // a steady flow: du/dt = 0
-  // Pseudo time is not time: the steady state starts a new water balance.
-  const std::vector<double> rates = balance_.group_rate;
-  balance_ = WaterBalance{};
-  balance_.initial_volume = balance_.volume = volume();
-  balance_.group_outflow.assign(mesh_.group_names.size(), 0.0);
-  balance_.group_rate = rates;
-  return report;
-}
-
-double ShallowWaterSolver::residual_norm(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd r = system_.b - system_.A * x;
-  // Continuity rows [m^3/s] scaled by sqrt(g / H) to the momentum rows' [m^3/s^2].
-  const double scale = std::sqrt(case_.flow.gravity / H_mean_);
-  for (int j = 0; j < mesh_.vertex_count; ++j) r[system_.eta_row(j)] *= scale;
-  return r.norm();
 }
 
 // Boundary velocities at t^{n+1}: velocity and zero nodes take their value; discharge nodes
@@ -234,21 +166,6 @@ void ShallowWaterSolver::check_state(const FlowState& s, double t) const {
           "below the dry depth {} m (the FEM engine needs a wet domain, spec 1.5)",
           t, tag(i), p.x(), p.y(), H, case_.flow.dry_depth);
   }
-}
-
-double ShallowWaterSolver::march_to_steady(double dt, double settled, double t_max) {
-  double change = 1.0;  // [-] max |u^{n+1} - u^n| / max |u^{n+1}|
-  while (change > settled && state_.time < t_max) {
-    const FlowState before = state_;
-    step(dt);
-    double du = 0.0, u_max = 0.0;
-    for (std::size_t n = 0; n < before.u.size(); ++n) {
-      du = std::max(du, std::hypot(state_.u[n] - before.u[n], state_.v[n] - before.v[n]));
-      u_max = std::max(u_max, std::hypot(state_.u[n], state_.v[n]));
-    }
-    change = u_max > 0.0 ? du / u_max : 0.0;
-  }
-  return change;
 }
 
 }  // namespace flotsam

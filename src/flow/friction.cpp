@@ -28,4 +28,11 @@ double FrictionModel::rate(double speed, double H) const {
   return coefficient_at(H) * speed / std::max(H, min_depth);
 }
 
+double FrictionModel::rate_depth_derivative(double speed, double H) const {
+  if (H <= min_depth) return 0.0;
+  // gamma ~ H^-p: p = 4/3 for Manning and Strickler (c_f ~ H^-1/3), 1 for Chezy.
+  const double p = law == FrictionLaw::chezy ? 1.0 : 4.0 / 3.0;
+  return -p * rate(speed, H) / H;
+}
+
 }  // namespace flotsam

@@ -23,6 +23,8 @@ struct FrictionModel {
 
   /// gamma = c_f |u| / H [1/s]: F_friction = - gamma u.
   double rate(double speed, double H) const;
+  /// d gamma / d H [1/(m s)] (Newton's linearisation in the depth); 0 below H_min.
+  double rate_depth_derivative(double speed, double H) const;
 };
 
 }  // namespace flotsam

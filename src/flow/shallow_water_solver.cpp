@@ -181,7 +181,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
       nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p.friction,
                                          avg);  // (M-3)
     }
-    s.nu_e = flow.viscosity + nu_t_[e];  // (M-3)
+    s.nu_e = flow.viscosity + it.added_viscosity + nu_t_[e];  // (M-3)
     LocalMatrix K;
     LocalVector F;
     assemble_element(p, ev, s, K, F);

@@ -39,8 +39,9 @@ struct FlowSolverOptions {
   double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
   bool supg = true;                   // SUPG stabilisation of advection (Advection::supg)
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
-  double steady_initial_dt = 0.0;     // [s] first pseudo time step; 0: 10 h_min / sqrt(g H_max)
-  double steady_max_dt_factor = 1e4;  // [-] pseudo step cap, in units of the first one
+  // [s] largest pseudo time step of the steady solve's Newton iterations (a small time term
+  // keeps the linearised steady problem regular: closed basins, u = 0); 0: 1e5 h_min / sqrt(g H).
+  double steady_pseudo_dt = 0.0;
   // [elements] colours smaller than this are assembled serially: starting threads costs more
   // than it saves on a few hundred elements.
   int parallel_min_colour = 512;
@@ -55,8 +56,10 @@ struct StepReport {
 
 struct SteadyReport {
   bool converged = false;
-  int iterations = 0;
-  std::vector<double> residuals;  // relative residual before each iteration [-]
+  int iterations = 0;               // Newton iterations, all continuation stages together
+  std::vector<double> residuals;    // [-] relative residual before each iteration and at the end
+  std::vector<double> viscosities;  // [m^2/s] the viscosity each residual was computed with
+  double viscosity = 0.0;           // [m^2/s] the lowest viscosity whose steady state was found
 };
 
 class ShallowWaterSolver {
@@ -74,9 +77,12 @@ class ShallowWaterSolver {
   /// Advances the flow by dt [s]. Throws RunError when a node dries or the solution is not
   /// finite; the state is then left at the start of the step.
   StepReport step(double dt);
-  /// Drives the flow at the current time to steady state by pseudo-time stepping (backward Euler
-  /// with a growing pseudo step, i.e. Newton's method for the steady equations in the limit),
-  /// until the relative residual is below TimeConfig::steady_tolerance.
+  /// Drives the flow at the current time to steady state: Newton's method for the steady
+  /// (Eulerian, SUPG) equations, damped so that the residual falls and no node dries, until the
+  /// residual relative to the starting state's is below TimeConfig::steady_tolerance. When
+  /// Newton fails from the current state, continuation in the viscosity: the steady state of a
+  /// more viscous flow, then step by step down to the case's (steady_state.cpp). Not converged:
+  /// the state is the steady state at SteadyReport::viscosity.
   SteadyReport solve_steady();
   /// The other road to a steady state, when solve_steady cannot take it (a long channel whose
   /// pseudo steps follow its slow transient): steps of dt [s] until the largest change of the
@@ -113,6 +119,7 @@ class ShallowWaterSolver {
   struct Iteration {  // the linearised problem of one iteration
     double theta, inv_dt, t_new, t_source;
     bool characteristics;  // advection done by characteristics (u_departure_), else Eulerian
+    double added_viscosity = 0.0;  // [m^2/s] on top of the case's (steady continuation)
   };
   void setup_system();
   void assemble_system(const Iteration& it);
@@ -126,6 +133,9 @@ class ShallowWaterSolver {
   void update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x);
   void check_state(const FlowState& s, double t) const;
   double residual_norm(const Eigen::VectorXd& x) const;
+  double steady_residual(const Iteration& it);
+  bool newton_to_steady(Iteration it, double dt, double dt_max, double r_ref, double tolerance,
+                        int max_iterations, SteadyReport& report);
 
   const Mesh& mesh_;
   const Case& case_;

@@ -1,19 +1,17 @@
-// ctest-label: slow
 // Verifies the paper's channel with two bridges (spec 8.2, examples/bridge_piers.yaml: 1500 m x
-// 170 m, four piers of radius 30 m, eta 10 m in and 9.8 m out, Manning n = 0.03, nu = 0.03 m^2/s)
-// at steady state (issue 3 item 5), on the case's own mesh (4,468 P2 triangles, curved pier walls
-// with slip at averaged normals):
-//   - symmetric about the centre line y = 85 m: eta and |u| at mirrored points agree within 1%
-//     of the head drop (2 mm) and 2% of the fastest speed (the mesh itself is not symmetric);
+// 170 m, four piers of radius 30 m, eta 10 m in and 9.8 m out, Manning n = 0.03) at steady state
+// (issue 3 item 5), on the case's own mesh (4,468 P2 triangles, curved pier walls with slip at
+// averaged normals):
+//   - steady: the steady solve's relative residual reaches 1e-8;
+//   - symmetric about the centre line y = 85 m: eta and |u| at mirrored points agree within 2%
+//     of the range of eta (which the piers' drawdown makes twice the head drop) and 2% of the
+//     fastest speed (the mesh itself is not symmetric: P1 eta interpolated at mirrored points);
 //   - the discharge integral of H u_x over every cross-section x = const is the inflow within 0.5%;
 //   - no flow through the walls: the integral of |H u . n| over each pier is below 0.5% of Q;
 //   - the fastest flow is in the bridges' gaps (|x - x_bridge| <= pier radius).
-// The steady state is sought by time-marching from still water (dt = 20 s, theta = 0.6, the
-// default characteristics scheme) until the velocity changes by less than 1e-5 of its maximum per
-// step; the case's viscosity is raised to Re = 20 on the pier diameter, because at the paper's
-// Re = 1000 the piers shed eddies and no steady state exists. Status (docs/validation.md): the
-// march stalls at a change of 1.8e-3 per step; the other checks are reported all the same.
-// About two minutes: labelled slow.
+// The case's viscosity is raised to Re = 20 on the pier diameter (nu = 1.5 m^2/s): at the
+// paper's Re = 1000 the piers shed eddies (its Fig. 16), and the steady branch that the steady
+// solve follows down in viscosity ends near Re = 750 (docs/model.md, "Steady mode").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,8 +47,9 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
   const Mesh mesh = generate_mesh(c.mesh);
   ShallowWaterSolver solver(mesh, c);
   solver.initialize();
-  const double change = solver.march_to_steady(20.0, 1e-5, 7200.0);  // dt 20 s, up to 2 h
-  EXPECT_LE(change, 1e-5) << "not steady at t = " << solver.time();
+  const SteadyReport steady = solver.solve_steady();
+  ASSERT_TRUE(steady.converged);
+  EXPECT_LE(steady.residuals.back(), 1e-8);
 
   const ChannelGeometry& channel = c.mesh.channel;
   const double L = channel.length, B = channel.width;  // [m]
@@ -105,7 +104,6 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
   }
 
   // Symmetry about y = B/2 at mirrored points.
-  const double head = c.flow.initial_eta_start - c.flow.initial_eta_end;  // [m]
   const double u_max = max_speed(solver);
   double eta_asymmetry = 0.0, speed_asymmetry = 0.0;
   for (double x = 50.0; x < L; x += 25.0)
@@ -117,7 +115,8 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
       eta_asymmetry = std::max(eta_asymmetry, std::abs(eta_a - eta_b));
       speed_asymmetry = std::max(speed_asymmetry, std::abs(u_a.norm() - u_b.norm()));
     }
-  EXPECT_LE(eta_asymmetry, 0.01 * head);
+  const auto [eta_lo, eta_hi] = std::minmax_element(solver.eta().begin(), solver.eta().end());
+  EXPECT_LE(eta_asymmetry, 0.02 * (*eta_hi - *eta_lo));
   EXPECT_LE(speed_asymmetry, 0.02 * u_max);
 
   // Fastest flow in a bridge's gaps.
@@ -129,9 +128,10 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
     nearest_bridge = std::min(nearest_bridge, std::abs(where.x() - pier.centre.x()));
   EXPECT_LE(nearest_bridge, channel.piers.front().radius);
   std::printf(
-      "bridge: steady at t = %.0f s (change %.1e); Q = %.2f m^3/s; asymmetry eta %.2e m, |u| "
-      "%.2e m/s; fastest %.3f m/s at (%.1f, %.1f)\n",
-      solver.time(), change, Q_in, eta_asymmetry, speed_asymmetry, u_max, where.x(), where.y());
+      "bridge: steady after %d iterations (residual %.1e); Q = %.2f m^3/s; asymmetry eta %.2e m, "
+      "|u| %.2e m/s; fastest %.3f m/s at (%.1f, %.1f)\n",
+      steady.iterations, steady.residuals.back(), Q_in, eta_asymmetry, speed_asymmetry, u_max,
+      where.x(), where.y());
 }
 
 }  // namespace
