@@ -30,7 +30,7 @@ double ShallowWaterSolver::residual_norm(const Eigen::VectorXd& x) const {
 // Assembles the pseudo step from the current state and returns its residual b - A x at x = the
 // state, where the pseudo time term vanishes: the residual of the steady equations.
 double ShallowWaterSolver::steady_residual(const Iteration& it) {
-  previous_ = linearisation_ = state_;
+  previous_ = state_;
   set_boundary_velocities(it);
   linearisation_ = state_;
   assemble_system(it);
@@ -39,7 +39,7 @@ double ShallowWaterSolver::steady_residual(const Iteration& it) {
 }
 
 // Newton's method from the current state with a pseudo time term (pseudo-transient
-// continuation): the pseudo step starts at dt_max; a step that dries a node, is not finite or
+// continuation): the pseudo step starts at dt; a step that dries a node, is not finite or
 // multiplies the residual by ten is taken again with a quarter of the pseudo step, and after an
 // accepted one the pseudo step grows as the residual falls (switched evolution relaxation,
 // Mulder & van Leer 1985), up to dt_max. True when the residual reaches tolerance * r_ref within
