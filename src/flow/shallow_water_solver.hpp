@@ -78,11 +78,12 @@ class ShallowWaterSolver {
   /// finite; the state is then left at the start of the step.
   StepReport step(double dt);
   /// Drives the flow at the current time to steady state: Newton's method for the steady
-  /// (Eulerian, SUPG) equations, damped so that the residual falls and no node dries, until the
-  /// residual relative to the starting state's is below TimeConfig::steady_tolerance. When
-  /// Newton fails from the current state, continuation in the viscosity: the steady state of a
-  /// more viscous flow, then step by step down to the case's (steady_state.cpp). Not converged:
-  /// the state is the steady state at SteadyReport::viscosity.
+  /// (Eulerian, SUPG) equations with a pseudo time term, whose step shrinks when a node dries or
+  /// the residual jumps, until the residual relative to the starting state's is below
+  /// TimeConfig::steady_tolerance. When Newton fails from the current state and from the initial
+  /// one, continuation in the viscosity: the steady state of a more viscous flow, then step by
+  /// step down to the case's (steady_state.cpp). Not converged: the state is the steady state at
+  /// SteadyReport::viscosity.
   SteadyReport solve_steady();
   /// The other road to a steady state, when solve_steady cannot take it (a long channel whose
   /// pseudo steps follow its slow transient): steps of dt [s] until the largest change of the
