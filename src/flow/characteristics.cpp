@@ -11,6 +11,7 @@ namespace {
 
 constexpr double courant_per_substep = 0.5;  // [-] path length of one sub-step / h_e
 constexpr int substep_limit = 10000;         // [-] bounds a path in a stagnant eddy
+constexpr int max_halvings = 4;              // [-] of a sub-step that leaves the domain
 
 }  // namespace
 
@@ -24,17 +25,19 @@ Characteristics::Characteristics(const Mesh& mesh)
 }
 
 void Characteristics::advect(const std::vector<double>& u, const std::vector<double>& v, double dt,
-                             std::vector<double>& u_d, std::vector<double>& v_d) const {
+                             const std::vector<double>& q_x, const std::vector<double>& q_y,
+                             std::vector<double>& q_x_d, std::vector<double>& q_y_d) const {
   const int n = mesh_.node_count();
-  u_d.resize(n);
-  v_d.resize(n);
+  q_x_d.resize(n);
+  q_y_d.resize(n);
   int most = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : most)
   for (int i = 0; i < n; ++i) {
     // The velocity at p, or false when p is outside the domain; `element` follows the walk.
     int element = node_element_[i];
+    Location at, foot_at;
     const auto velocity = [&](const Vec2& p, Vec2& w) {
-      const Location at = locator_.locate(p, element);
+      at = locator_.locate(p, element);
       if (!at.inside) return false;
       element = at.element;
       w = interpolate_p2(mesh_, at, u, v);
@@ -42,23 +45,31 @@ void Characteristics::advect(const std::vector<double>& u, const std::vector<dou
     };
     Vec2 x = mesh_.nodes[i];
     Vec2 w(u[i], v[i]);
+    bool moved = false;
     double left = dt;  // [s] of the path still to trace
-    int steps = 0;
+    int steps = 0, halvings = 0;
     while (left > 0.0 && steps < substep_limit) {
       const double speed = w.norm();
       if (speed == 0.0) break;
-      const double h = std::min(left, courant_per_substep * size_[element] / speed);  // [s]
+      const double h = std::min(left, courant_per_substep * size_[element] / speed) /
+                       static_cast<double>(1 << halvings);  // [s]
       Vec2 w_mid, w_end;
-      if (!velocity(x - 0.5 * h * w, w_mid)) break;  // midpoint rule
-      const Vec2 foot = x - h * w_mid;
-      if (!velocity(foot, w_end)) break;  // left the domain: stop at x
-      x = foot;
+      const int start = element;
+      if (!velocity(x - 0.5 * h * w, w_mid) || !velocity(x - h * w_mid, w_end)) {  // midpoint
+        element = start;
+        if (++halvings > max_halvings) break;  // left the domain: stop at x
+        continue;
+      }
+      x -= h * w_mid;
       w = w_end;
+      foot_at = at;
+      moved = true;
       left -= h;
       ++steps;
     }
-    u_d[i] = w.x();
-    v_d[i] = w.y();
+    const Vec2 q = moved ? interpolate_p2(mesh_, foot_at, q_x, q_y) : Vec2(q_x[i], q_y[i]);
+    q_x_d[i] = q.x();
+    q_y_d[i] = q.y();
     most = std::max(most, steps);
   }
   max_substeps_ = most;

@@ -1,12 +1,16 @@
 #pragma once
-// Advection by the method of characteristics (spec 1.3, the paper's ref. [11]): the advective
-// part of (M-1a), du/dt + (u . grad) u = 0, is solved exactly along the paths of the water,
-//     u*(x_i) = u^n(X_i(t^n)),   dX/dt = u^n(X),  X(t^{n+1}) = x_i,
+// Advection by the method of characteristics (spec 1.3, the paper's ref. [11]): the material
+// derivative of (M-1a), du/dt + (u . grad) u, is taken along the paths of the water,
+//     q*(x_i) = q^n(X_i(t^n)),   dX/dt = u^n(X),  X(t^{n+1}) = x_i,
 // at every P2 node x_i, by tracing the path back over dt (midpoint rule in sub-steps of at most
-// half an element) and interpolating u^n at its foot with the P2 shape functions. It is
-// unconditionally stable, has no node-to-node wiggles, and uses the point location of spec 4.4
-// (the walk from the element of the previous sub-step). A path that leaves the domain stops at
-// its last point inside: through an inflow boundary the water brings the boundary's velocity.
+// half an element) and interpolating the carried field q^n at its foot with the P2 shape
+// functions (q^n = u^n plus the explicit part of the step's acceleration: flow_time_stepping.cpp).
+// It is unconditionally stable, has no node-to-node wiggles, and uses the point location of
+// spec 4.4 (the walk from the element of the previous sub-step). A sub-step that leaves the
+// domain is halved (up to 4 times): a path along a straight wall runs on its line, where
+// round-off puts half its points outside, and a chord cuts across a curved wall. A path that
+// still leaves stops at its last point inside: through an inflow boundary the water brings the
+// boundary's value.
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -19,10 +23,12 @@ class Characteristics {
   /// Keeps a reference to `mesh`, which must outlive this object.
   explicit Characteristics(const Mesh& mesh);
 
-  /// Departure values (u_d, v_d) at every P2 node of the P2 field (u, v) [m/s] after dt [s].
-  /// Deterministic and thread-count independent (one path per node, OpenMP over nodes).
+  /// Departure values (q_x, q_y)(X_i) at every P2 node of the carried P2 field (q_x, q_y) along
+  /// the paths of the P2 velocity (u, v) [m/s] over dt [s]. Deterministic and thread-count
+  /// independent (one path per node, OpenMP over nodes).
   void advect(const std::vector<double>& u, const std::vector<double>& v, double dt,
-              std::vector<double>& u_d, std::vector<double>& v_d) const;
+              const std::vector<double>& q_x, const std::vector<double>& q_y,
+              std::vector<double>& q_x_d, std::vector<double>& q_y_d) const;
 
   /// Largest number of sub-steps any path took in the last advect() [-] (statistics).
   int max_substeps() const { return max_substeps_; }

@@ -88,8 +88,10 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       force += src.momentum;
       S = src.continuity;
     }
-    // With characteristics the advection is done (u_d); here only the Eulerian form has it.
+    // With characteristics the advection is done (u_d), and the explicit parts of (3) and (6)
+    // are in u_d too, taken at the departure point (assemble_explicit_momentum).
     const double adv = p.characteristics ? 0.0 : 1.0;
+    const double explicit_here = p.characteristics ? 0.0 : 1.0 - th;
     const Supg supg =
         p.supg && !p.characteristics ? supg_tau(p.inv_dt, u_k, nu, gamma, dgamma_dH, h) : Supg{};
     const double tau = supg.tau;
@@ -138,11 +140,11 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
               JxW;                                                           // (3) (5) (7), SUPG
         double rhs = s_a * u_d[c] * p.inv_dt;                                // (1)
         rhs += th * s_a * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
-        rhs -= (1 - th) * g * s_a * grad_eta_n[c];                           // (3)
+        rhs -= explicit_here * g * s_a * grad_eta_n[c];                      // (3)
         rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                   // (4)
         rhs += (1 - th) * psi * nu * visc_n[c];                              // (4)
         rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);                      // (5)
-        rhs -= (1 - th) * f * s_a * coriolis_n[c];                           // (6)
+        rhs -= explicit_here * f * s_a * coriolis_n[c];                      // (6)
         rhs += s_a * force[c];                                               // (7)
         rhs += s_a * depth_rate[c] * eta_k;                                  // (5) (7)
         rhs += (dpsi_du.dot(u_k) + dpsi_dH * eta_k) * residual_k[c];         // SUPG
@@ -166,6 +168,20 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       rhs += M[i] * S;                                                       // (11)
       F(row) += rhs * JxW;
     }
+  }
+}
+
+void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues& ev,
+                                const ElementState& s, std::array<Vec2, 6>& F) {
+  F.fill(Vec2::Zero());
+  const double weight = 1.0 - p.theta;
+  for (int q = 0; q < triangle_point_count; ++q) {
+    const auto& N = ev.N2[q];
+    Vec2 u_n = Vec2::Zero(), grad_eta_n = Vec2::Zero();
+    for (int b = 0; b < 6; ++b) u_n += N[b] * Vec2(s.u_n[b], s.v_n[b]);
+    for (int j = 0; j < 3; ++j) grad_eta_n += s.eta_n[j] * ev.dN1[q][j];
+    const Vec2 acceleration = p.gravity * grad_eta_n + p.coriolis * Vec2(-u_n.y(), u_n.x());
+    for (int a = 0; a < 6; ++a) F[a] -= weight * N[a] * acceleration * ev.JxW[q];  // (3) (6)
   }
 }
 

@@ -6,9 +6,11 @@
 //
 //  momentum (M-1a), for all w:
 //    (1) (w, (u - u_d)/dt)                                          time; u_d = u^n, or the
-//                                                                   departure values u^n(X) of
-//                                                                   the characteristics, which
-//                                                                   then replace (2) and SUPG
+//                                                                   departure values of the
+//                                                                   characteristics, which then
+//                                                                   replace (2) and SUPG and
+//                                                                   hold the (1-theta) parts of
+//                                                                   (3) and (6)
 //    (2) theta (w, (u^k.grad)u + (u.grad)u^k - (u^k.grad)u^k)       advection, Newton
 //        + (1-theta) (w, (u^n.grad)u^n)
 //    (3) g (w, grad(theta eta + (1-theta) eta^n))                   surface slope (not by parts:
@@ -63,8 +65,9 @@ struct AssemblyParameters {
   Vec2 wind_stress = Vec2::Zero();  // (rho_air/rho) C_w |W| W [m^2 s^-2]; F_wind = this / H
   FrictionModel friction;
   bool supg = true;
-  // Advection by characteristics (characteristics.hpp): terms (2) and SUPG are left out and the
-  // time term (1) starts from the departure values u_d instead of u^n.
+  // Advection by characteristics (characteristics.hpp): terms (2) and SUPG and the explicit
+  // parts of (3) and (6) are left out, and the time term (1) starts from the departure values
+  // u_d instead of u^n (they hold those explicit parts, at the departure point).
   bool characteristics = false;
   double source_time = 0.0;  // t^{n+theta} [s], where the source function is evaluated
   const SourceFunction* source = nullptr;
@@ -85,6 +88,15 @@ struct ElementState {
 /// Terms (1)-(9), (11) of the element.
 void assemble_element(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
                       LocalMatrix& K, LocalVector& F);
+
+/// With characteristics: the explicit parts of terms (3) and (6) at t^n, per local node a,
+///   F_a = -(1-theta) (N_a, g grad eta^n + f k x u^n)   [m^3 s^-2],
+/// whose L2 projection onto P2 is the explicit acceleration that the characteristics carry to
+/// the departure point (assemble_element then leaves these parts out). The viscous term (4)
+/// stays at the arrival point: its weak form, by parts, has no pointwise projection at the
+/// boundary (the projection would put the wall's shear stress into the boundary nodes).
+void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues& ev,
+                                const ElementState& s, std::array<Vec2, 6>& F);
 
 /// Term (10) on one open boundary edge, as the outflow H u . n it carries:
 /// flux[i] = <q_i, theta H^k u_b . n + (1-theta) H^n u^n . n> for its two vertices [m^3/s].

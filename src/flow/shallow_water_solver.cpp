@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "core/constants.hpp"
@@ -55,7 +56,10 @@ void ShallowWaterSolver::setup_system() {
   for (const auto& n : bc_.slip_nodes) slip_nodes.push_back(n.node);
   system_.setup(mesh_, dirichlet_rows, slip_nodes);
   colours_ = element_colours(mesh_);
-  if (options_.advection == Advection::characteristics) characteristics_.emplace(mesh_);
+  if (options_.advection == Advection::characteristics) {
+    characteristics_.emplace(mesh_);
+    mass_.emplace(mesh_);
+  }
   nu_t_.assign(mesh_.element_count(), 0.0);
   open_flux_.assign(mesh_.group_names.size(), 0.0);
   elevation_group_.clear();
@@ -103,6 +107,7 @@ void ShallowWaterSolver::set_state(const FlowState& s) {
           mesh_.source, H_dry, s.eta[j], z_b_[j]);
   state_ = s;
   previous_ = s;
+  linearisation_ = s;
   double H_sum = 0.0, A_sum = 0.0;
   for (int j = 0; j < mesh_.vertex_count; ++j) {
     H_sum += lumped_p1_[j] * (s.eta[j] - z_b_[j]);
@@ -122,7 +127,7 @@ double ShallowWaterSolver::volume() const {
 
 // ---- one linearised problem -------------------------------------------------------------------
 
-void ShallowWaterSolver::assemble_system(const Iteration& it) {
+AssemblyParameters ShallowWaterSolver::assembly_parameters(const Iteration& it) const {
   const auto& flow = case_.flow;
   AssemblyParameters p;
   p.theta = it.theta;
@@ -137,30 +142,56 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
   p.characteristics = it.characteristics;
   p.source_time = it.t_source;
   p.source = options_.source ? &options_.source : nullptr;
+  return p;
+}
 
-  system_.set_zero();
+ElementState ShallowWaterSolver::element_state(int e, bool characteristics) const {
+  const auto& el = mesh_.elements[e];
   const FlowState& k = linearisation_;
   const FlowState& n = previous_;
-  const auto assemble_one = [&](int e) {
-    const auto& el = mesh_.elements[e];
+  ElementState s;
+  for (int a = 0; a < 6; ++a) {
+    s.u_k[a] = k.u[el[a]];
+    s.v_k[a] = k.v[el[a]];
+    s.u_n[a] = n.u[el[a]];
+    s.v_n[a] = n.v[el[a]];
+    s.u_d[a] = characteristics ? u_departure_[el[a]] : s.u_n[a];
+    s.v_d[a] = characteristics ? v_departure_[el[a]] : s.v_n[a];
+    s.z_b[a] = z_b_[el[a]];
+    s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
+  }
+  for (int j = 0; j < 3; ++j) {
+    s.eta_k[j] = k.eta[el[j]];
+    s.eta_n[j] = n.eta[el[j]];
+  }
+  if (!element_forces_.empty()) s.element_force = element_forces_[e];
+  s.nu_e = case_.flow.viscosity + nu_t_[e];  // (M-3)
+  return s;
+}
+
+// Small colours run serially outside any OpenMP construct: even a parallel region with a false
+// if-clause keeps the idle threads spinning, which on a loaded machine slowed small cases 10-20x.
+void ShallowWaterSolver::for_each_element(const std::function<void(int)>& visit) const {
+  const size_t parallel_threshold = static_cast<size_t>(std::max(options_.parallel_min_colour, 1));
+  for (const auto& colour : colours_) {
+    const int count = static_cast<int>(colour.size());
+    if (colour.size() >= parallel_threshold) {
+#pragma omp parallel for schedule(static)
+      for (int idx = 0; idx < count; ++idx) visit(colour[idx]);
+    } else {
+      for (int idx = 0; idx < count; ++idx) visit(colour[idx]);
+    }
+  }
+}
+
+void ShallowWaterSolver::assemble_system(const Iteration& it) {
+  const auto& flow = case_.flow;
+  const AssemblyParameters p = assembly_parameters(it);
+  system_.set_zero();
+  for_each_element([&](int e) {
     ElementValues ev;
     compute_element_values(mesh_, e, ev);
-    ElementState s;
-    for (int a = 0; a < 6; ++a) {
-      s.u_k[a] = k.u[el[a]];
-      s.v_k[a] = k.v[el[a]];
-      s.u_n[a] = n.u[el[a]];
-      s.v_n[a] = n.v[el[a]];
-      s.u_d[a] = p.characteristics ? u_departure_[el[a]] : s.u_n[a];
-      s.v_d[a] = p.characteristics ? v_departure_[el[a]] : s.v_n[a];
-      s.z_b[a] = z_b_[el[a]];
-      s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
-    }
-    for (int j = 0; j < 3; ++j) {
-      s.eta_k[j] = k.eta[el[j]];
-      s.eta_n[j] = n.eta[el[j]];
-    }
-    if (!element_forces_.empty()) s.element_force = element_forces_[e];
+    ElementState s = element_state(e, it.characteristics);
     if (flow.turbulence != TurbulenceModel::none) {
       ElementFlowAverage avg;
       for (int q = 0; q < triangle_point_count; ++q)
@@ -186,23 +217,13 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     LocalVector F;
     assemble_element(p, ev, s, K, F);
     system_.add(system_.element_rows(mesh_, e), K, F);
-  };
-  // Small colours run serially outside any OpenMP construct: even a parallel region with a false
-  // if-clause keeps the idle threads spinning, which on a loaded machine slowed small cases 10-20x.
-  const size_t parallel_threshold = static_cast<size_t>(std::max(options_.parallel_min_colour, 1));
-  for (const auto& colour : colours_) {
-    const int count = static_cast<int>(colour.size());
-    if (colour.size() >= parallel_threshold) {
-#pragma omp parallel for schedule(static)
-      for (int idx = 0; idx < count; ++idx) assemble_one(colour[idx]);
-    } else {
-      for (int idx = 0; idx < count; ++idx) assemble_one(colour[idx]);
-    }
-  }
+  });
 
   if (!it.characteristics) assemble_inflow_stabilisation();
 
   // Term (10) on discharge and velocity boundaries: the outflow, known, to the right-hand side.
+  const FlowState& k = linearisation_;
+  const FlowState& n = previous_;
   std::fill(open_flux_.begin(), open_flux_.end(), 0.0);
   EdgeValues ev;
   for (const auto& open : bc_.open_edges) {

@@ -7,6 +7,7 @@
 //
 // Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
 // -> solve] per iteration -> check_state; step() and solve_steady() call them in order.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "flow/element_assembly.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/linear_system.hpp"
+#include "flow/mass_matrix.hpp"
 #include "flow/water_balance.hpp"
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
@@ -123,6 +125,10 @@ class ShallowWaterSolver {
     double added_viscosity = 0.0;  // [m^2/s] on top of the case's (steady continuation)
   };
   void setup_system();
+  AssemblyParameters assembly_parameters(const Iteration& it) const;
+  ElementState element_state(int e, bool characteristics) const;
+  void for_each_element(const std::function<void(int)>& visit) const;
+  void departure_values(const Iteration& it, double dt);
   void assemble_system(const Iteration& it);
   void assemble_inflow_stabilisation();
   void apply_boundary_conditions(const Iteration& it);
@@ -146,7 +152,9 @@ class ShallowWaterSolver {
   SparseDirectSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
-  std::vector<double> u_departure_, v_departure_;  // [m/s] per P2 node: u^n at the path's foot
+  std::optional<P2MassMatrix> mass_;               // with characteristics
+  std::vector<double> u_departure_, v_departure_;  // [m/s] per P2 node: u^n + dt a^n at the
+                                                   // path's foot (departure_values)
 
   std::vector<double> z_b_;        // [m] per P2 node
   std::vector<double> nu_t_;       // [m^2/s] per element

@@ -25,7 +25,7 @@ TEST(Characteristics, DepartureValuesOfAStagnationPointFlow) {
     v[i] = -c * (mesh.nodes[i].y() - y0);
   }
   const Characteristics characteristics(mesh);
-  characteristics.advect(u, v, dt, u_d, v_d);
+  characteristics.advect(u, v, dt, u, v, u_d, v_d);
   int checked = 0;
   for (int i = 0; i < mesh.node_count(); ++i) {
     const double X = x0 + (mesh.nodes[i].x() - x0) * std::exp(-c * dt);
@@ -46,7 +46,7 @@ TEST(Characteristics, StillWaterStaysStill) {
   const Mesh mesh = make_rectangle_mesh({.length = 10.0, .width = 10.0, .nx = 3, .ny = 3});
   const std::vector<double> zero(mesh.node_count(), 0.0);
   std::vector<double> u_d, v_d;
-  Characteristics(mesh).advect(zero, zero, 100.0, u_d, v_d);
+  Characteristics(mesh).advect(zero, zero, 100.0, zero, zero, u_d, v_d);
   for (int i = 0; i < mesh.node_count(); ++i) {
     EXPECT_EQ(u_d[i], 0.0);
     EXPECT_EQ(v_d[i], 0.0);
