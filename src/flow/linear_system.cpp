@@ -2,8 +2,6 @@
 #pragma GCC diagnostic ignored "-Wnull-dereference"
 #include "flow/linear_system.hpp"
 
-#include <Eigen/KLUSupport>
-#include <Eigen/UmfPackSupport>
 #include <algorithm>
 #include <cstdint>
 
@@ -129,44 +127,6 @@ double LinearSystem::saved_row_residual(int slot, const Eigen::VectorXd& x) cons
   double r = -saved_rhs_[slot];
   for (size_t i = 0; i < list.column.size(); ++i) r += saved_values_[slot][i] * x[list.column[i]];
   return r;
-}
-
-// ---- solver -------------------------------------------------------------------------------
-
-struct SparseDirectSolver::Impl {
-  LinearSolverKind kind;
-  bool analysed = false;
-  Eigen::UmfPackLU<SparseMatrix> umfpack;
-  Eigen::KLU<SparseMatrix> klu;
-};
-
-SparseDirectSolver::SparseDirectSolver(LinearSolverKind kind) : impl_(std::make_unique<Impl>()) {
-  impl_->kind = kind;
-  // No iterative refinement: LU with partial pivoting already leaves a residual at round-off
-  // on these systems (the water balance closes to 1e-15), and each refinement step costs a solve
-  // and a product with A.
-  impl_->umfpack.umfpackControl()(UMFPACK_IRSTEP) = 0;
-}
-SparseDirectSolver::~SparseDirectSolver() = default;
-SparseDirectSolver::SparseDirectSolver(SparseDirectSolver&&) noexcept = default;
-SparseDirectSolver& SparseDirectSolver::operator=(SparseDirectSolver&&) noexcept = default;
-
-bool SparseDirectSolver::factorize(const SparseMatrix& A) {
-  if (impl_->kind == LinearSolverKind::umfpack) {
-    if (!impl_->analysed) impl_->umfpack.analyzePattern(A);
-    impl_->analysed = true;
-    impl_->umfpack.factorize(A);
-    return impl_->umfpack.info() == Eigen::Success;
-  }
-  if (!impl_->analysed) impl_->klu.analyzePattern(A);
-  impl_->analysed = true;
-  impl_->klu.factorize(A);
-  return impl_->klu.info() == Eigen::Success;
-}
-
-Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& b) const {
-  if (impl_->kind == LinearSolverKind::umfpack) return impl_->umfpack.solve(b);
-  return impl_->klu.solve(b);
 }
 
 // ---- colouring ----------------------------------------------------------------------------

@@ -3,21 +3,17 @@
 // direct solver. Unknowns: u at P2 node i is row 2i, v is 2i+1, eta at vertex j is 2N + j
 // (N = P2 node count). The sparsity pattern holds full 2x2 node blocks, so that the u and v rows
 // of a node have the same columns (slip constraints combine them); it is built once, and the
-// symbolic factorisation is computed once and reused by every numeric factorisation.
-#include <Eigen/Sparse>
+// symbolic factorisation is computed once and reused by every numeric factorisation
+// (sparse_direct_solver.hpp).
 #include <array>
-#include <memory>
 #include <vector>
 
 #include "core/vec.hpp"
 #include "flow/element_assembly.hpp"
+#include "flow/sparse_direct_solver.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-enum class LinearSolverKind { umfpack, klu };
 
 class LinearSystem {
  public:
@@ -69,24 +65,6 @@ class LinearSystem {
   std::vector<RowEntries> dirichlet_entries_, slip_u_entries_, slip_v_entries_;
   std::vector<std::vector<double>> saved_values_;
   std::vector<double> saved_rhs_;
-};
-
-/// Sparse LU of the system: UMFPACK or KLU (SuiteSparse) through Eigen's wrappers. The first
-/// factorisation computes the symbolic analysis; later ones reuse it (same pattern).
-class SparseDirectSolver {
- public:
-  explicit SparseDirectSolver(LinearSolverKind kind = LinearSolverKind::umfpack);
-  ~SparseDirectSolver();
-  SparseDirectSolver(SparseDirectSolver&&) noexcept;
-  SparseDirectSolver& operator=(SparseDirectSolver&&) noexcept;
-
-  /// False when the matrix is singular or the factorisation failed.
-  bool factorize(const SparseMatrix& A);
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
 };
 
 /// Elements grouped so that no two elements of a group share a node (greedy colouring):

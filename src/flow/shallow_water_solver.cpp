@@ -282,11 +282,15 @@ void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
 }
 
 Eigen::VectorXd ShallowWaterSolver::solve() {
-  if (!solver_.factorize(system_.A))
-    throw_run_error(
-        "flow: t = {:.6g} s: the sparse LU factorisation failed (singular system): "
-        "check the boundary conditions of mesh {}",
-        linearisation_.time, mesh_.source);
+  if (!solver_.factorize(system_.A)) {
+    if (solver_.failure() == FactorizationFailure::singular)
+      throw_run_error(
+          "flow: t = {:.6g} s: the sparse LU factorisation failed: {}: check the boundary "
+          "conditions of mesh {}",
+          linearisation_.time, solver_.failure_message(), mesh_.source);
+    throw_run_error("flow: t = {:.6g} s: the sparse LU factorisation failed: {} (mesh {})",
+                    linearisation_.time, solver_.failure_message(), mesh_.source);
+  }
   return solver_.solve(system_.b);
 }
 
