@@ -30,9 +30,11 @@ class LinearSystem {
   std::array<int, 15> element_rows(const Mesh& mesh, int e) const;
 
   void set_zero();
-  /// Adds a local matrix and vector. Elements of one colour (element_colours) may be added
-  /// concurrently: they share no node, so they touch no common entry.
-  void add(const std::array<int, 15>& rows, const LocalMatrix& K, const LocalVector& F);
+  /// Adds the local matrix and vector of `element`, whose rows are element_rows(mesh, element).
+  /// Elements of one colour (element_colours) may be added concurrently: they share no node, so
+  /// they touch no common entry.
+  void add(int element, const std::array<int, 15>& rows, const LocalMatrix& K,
+           const LocalVector& F);
   /// Adds `value` to A(row, column), an entry of the pattern (serial use only).
   void add_entry(int row, int column, double value) {
     A.valuePtr()[position(row, column)] += value;
@@ -60,6 +62,10 @@ class LinearSystem {
   int position(int row, int column) const;
 
   int node_count_ = 0;
+  // Per element, 81 positions in A's value array: the first entry of each node block (u rows
+  // and columns of the six P2 nodes, eta of the three vertices), from which add finds all 225
+  // entries without a search. 324 B per element: 1.4 MB at 4.5k elements, 140 MB at 430k.
+  std::vector<int> block_positions_;
   std::vector<int> dirichlet_rows_;
   std::vector<int> slip_nodes_;
   std::vector<RowEntries> dirichlet_entries_, slip_u_entries_, slip_v_entries_;

@@ -185,7 +185,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     LocalMatrix K;
     LocalVector F;
     assemble_element(p, ev, s, K, F);
-    system_.add(system_.element_rows(mesh_, e), K, F);
+    system_.add(e, system_.element_rows(mesh_, e), K, F);
   };
   // Small colours run serially outside any OpenMP construct: even a parallel region with a false
   // if-clause keeps the idle threads spinning, which on a loaded machine slowed small cases 10-20x.
