@@ -2,11 +2,13 @@
 // Sparse LU of the flow system: UMFPACK or KLU (SuiteSparse) through Eigen's wrappers. The first
 // factorisation computes the symbolic analysis; later ones reuse it (same pattern).
 //
-// UMFPACK runs through its 64-bit interface (umfpack_dl_*): the 32-bit one (umfpack_di_*) counts
-// the memory of the LU in int units of 8 bytes and gives up ("out of memory") beyond 2^31 units
-// = 16 GiB, which the paper's channel reaches at about 500k elements. The system keeps 32-bit
-// indices (its pattern is far below 2^31 entries, and KLU's wrapper takes no other); the solver
-// keeps a 64-bit copy of the pattern (set once) and reads the values in place.
+// UMFPACK runs through its 64-bit interface (umfpack_dl_*). The 32-bit one (umfpack_di_*) returns
+// "out of memory" (status -1) without factorising when the symbolic analysis' upper bound on the
+// LU's memory passes what its int counters hold (2^31 units of 8 bytes, 16 GiB): on the paper's
+// channel at 431k elements that bound is 393 GiB, while the LU takes 4.9 GiB. The system keeps
+// 32-bit indices (its pattern is far below 2^31 entries, and Eigen's KLU wrapper takes no other);
+// the solver keeps a 64-bit copy of the pattern (set once, 8 bytes per entry) and reads the values
+// in place.
 #include <Eigen/Sparse>
 #include <memory>
 #include <string>
@@ -36,8 +38,9 @@ class SparseDirectSolver {
 
   FactorizationFailure failure() const { return failure_; }
   /// The last failure in words: the solver's status and the matrix size, and for lack of memory
-  /// the size of the LU the symbolic analysis predicted, e.g. "UMFPACK: out of memory (status
-  /// -1) factorising the 2250000 x 2250000 matrix with 81000000 entries: the LU needs 20.1 GiB".
+  /// UMFPACK's bounds on the memory of the LU, e.g. "UMFPACK: out of memory (status -1)
+  /// factorising the 1954467 x 1954467 matrix with 57743361 entries: the analysis bounds the LU
+  /// by 412.4 GiB (5.01e+10 entries) and the factorisation's peak by 415.7 GiB".
   const std::string& failure_message() const { return failure_message_; }
 
  private:
