@@ -17,7 +17,8 @@
 // far-field size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step
 // and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
 // FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
-// KLU instead of UMFPACK (scaling).
+// KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across steps as the
+// preconditioner of BiCGSTAB, or not (scaling; default: FlowSolverOptions').
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -167,6 +168,8 @@ int run_scaling(double mesh_size, int steps, double dt) {
   FlowSolverOptions options;
   const char* kind = std::getenv("FLOTSAM_FLOW_SOLVER");
   if (kind && std::string(kind) == "klu") options.linear_solver = LinearSolverKind::klu;
+  const char* reuse = std::getenv("FLOTSAM_FLOW_REUSE_LU");
+  if (reuse) options.reuse_factorisation = std::string(reuse) == "1";
   ShallowWaterSolver solver(mesh, c, options);
   const auto setup_start = Clock::now();
   solver.initialize();
@@ -182,6 +185,12 @@ int run_scaling(double mesh_size, int steps, double dt) {
       mesh_size, mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count,
       omp_get_max_threads(), mesh_wall, setup_wall, 1e3 * wall / steps,
       static_cast<double>(iterations) / steps, peak_memory_mib());
+  const auto& counts = solver.linear_solver_counts();
+  std::printf(
+      "linear solves %ld (reused LU: %s): %ld factorisations, %ld BiCGSTAB iterations, %ld "
+      "refactorisations after BiCGSTAB missed its tolerance\n",
+      counts.solves, options.reuse_factorisation ? "on" : "off", counts.factorisations,
+      counts.krylov_iterations, counts.krylov_failures);
   return 0;
 }
 

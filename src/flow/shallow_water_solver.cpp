@@ -16,7 +16,8 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
       case_(flow_case),
       options_(std::move(options)),
       bc_(resolve_boundary_conditions(mesh, flow_case.flow, flow_case.file)),
-      solver_(options_.linear_solver) {}
+      solver_(
+          {.kind = options_.linear_solver, .reuse_factorisation = options_.reuse_factorisation}) {}
 
 // ---- setup ----------------------------------------------------------------------------------
 
@@ -103,6 +104,7 @@ void ShallowWaterSolver::set_state(const FlowState& s) {
           mesh_.source, H_dry, s.eta[j], z_b_[j]);
   state_ = s;
   previous_ = s;
+  solver_.refactorise();
   double H_sum = 0.0, A_sum = 0.0;
   for (int j = 0; j < mesh_.vertex_count; ++j) {
     H_sum += lumped_p1_[j] * (s.eta[j] - z_b_[j]);
@@ -282,16 +284,15 @@ void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
 }
 
 Eigen::VectorXd ShallowWaterSolver::solve() {
-  if (!solver_.factorize(system_.A)) {
-    if (solver_.failure() == FactorizationFailure::singular)
-      throw_run_error(
-          "flow: t = {:.6g} s: the sparse LU factorisation failed: {}: check the boundary "
-          "conditions of mesh {}",
-          linearisation_.time, solver_.failure_message(), mesh_.source);
-    throw_run_error("flow: t = {:.6g} s: the sparse LU factorisation failed: {} (mesh {})",
-                    linearisation_.time, solver_.failure_message(), mesh_.source);
-  }
-  return solver_.solve(system_.b);
+  Eigen::VectorXd x;
+  if (solver_.solve(system_.A, system_.b, x)) return x;
+  if (solver_.failure() == FactorizationFailure::singular)
+    throw_run_error(
+        "flow: t = {:.6g} s: the sparse LU factorisation failed: {}: check the boundary "
+        "conditions of mesh {}",
+        linearisation_.time, solver_.failure_message(), mesh_.source);
+  throw_run_error("flow: t = {:.6g} s: the sparse LU factorisation failed: {} (mesh {})",
+                  linearisation_.time, solver_.failure_message(), mesh_.source);
 }
 
 Eigen::VectorXd ShallowWaterSolver::pack(const FlowState& s) const {

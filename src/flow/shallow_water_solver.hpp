@@ -16,6 +16,7 @@
 #include "flow/characteristics.hpp"
 #include "flow/element_assembly.hpp"
 #include "flow/flow_state.hpp"
+#include "flow/linear_solver.hpp"
 #include "flow/linear_system.hpp"
 #include "flow/water_balance.hpp"
 #include "io/case.hpp"
@@ -39,6 +40,9 @@ struct FlowSolverOptions {
   double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
   bool supg = true;                   // SUPG stabilisation of advection (Advection::supg)
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
+  // Keep the LU across solves as BiCGSTAB's preconditioner, refactorising when BiCGSTAB misses
+  // its tolerance in its iterations (linear_solver.hpp).
+  bool reuse_factorisation = true;
   // [s] largest pseudo time step of the steady solve's Newton iterations (a small time term
   // keeps the linearised steady problem regular: closed basins, u = 0); 0: 1e5 h_min / sqrt(g H).
   double steady_pseudo_dt = 0.0;
@@ -71,8 +75,13 @@ class ShallowWaterSolver {
   /// Bed, initial state (still water, eta linear in x between FlowConfig's initial values),
   /// sparsity pattern. Throws InputError when a node starts with a depth below the dry depth.
   void initialize();
-  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition.
+  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition. The
+  /// next linear solve factorises afresh.
   void set_state(const FlowState& state);
+  /// The next linear solve factorises afresh instead of reusing the last LU
+  /// (FlowSolverOptions::reuse_factorisation). At a checkpoint: a run restarted from it starts
+  /// with a fresh LU, so the run that goes on must too for both to stay the same bit for bit.
+  void start_fresh_factorisation() { solver_.refactorise(); }
 
   /// Advances the flow by dt [s]. Throws RunError when a node dries or the solution is not
   /// finite; the state is then left at the start of the step.
@@ -115,6 +124,8 @@ class ShallowWaterSolver {
   const Mesh& mesh() const { return mesh_; }
   const Case& flow_case() const { return case_; }
   const BoundaryConditions& boundary_conditions() const { return bc_; }
+  /// Solves, factorisations and Krylov iterations of the linear solver so far.
+  const LinearSolverCounts& linear_solver_counts() const { return solver_.counts(); }
 
  private:
   struct Iteration {  // the linearised problem of one iteration
@@ -143,7 +154,7 @@ class ShallowWaterSolver {
   FlowSolverOptions options_;
   BoundaryConditions bc_;
   LinearSystem system_;
-  SparseDirectSolver solver_;
+  LinearSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
   std::vector<double> u_departure_, v_departure_;  // [m/s] per P2 node: u^n at the path's foot
