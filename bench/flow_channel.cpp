@@ -17,7 +17,9 @@
 // far-field size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step
 // and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
 // FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
-// KLU instead of UMFPACK (scaling).
+// KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
+// preconditioner of BiCGSTAB, or not (all modes; unset: FlowSolverOptions' default); steady and
+// scaling print the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -96,11 +98,27 @@ Mesh channel_mesh(const Case& c) {
   return mesh;
 }
 
+// FLOTSAM_FLOW_REUSE_LU=1|0: the LU kept across solves or not (unset: the options' default).
+void set_reuse_from_environment(FlowSolverOptions& options) {
+  if (const char* e = std::getenv("FLOTSAM_FLOW_REUSE_LU"))
+    options.reuse_factorisation = std::string(e) == "1";
+}
+
+void print_linear_solver_counts(const ShallowWaterSolver& solver) {
+  const auto& counts = solver.linear_solver_counts();
+  std::printf(
+      "linear solves %ld: %ld factorisations, %ld BiCGSTAB iterations, %ld refactorisations "
+      "after BiCGSTAB missed its tolerance\n",
+      counts.solves, counts.factorisations, counts.krylov_iterations, counts.krylov_failures);
+}
+
 int run_steady(double mesh_size, double viscosity) {
   Case c = channel_case(mesh_size);
   if (viscosity > 0.0) c.flow.viscosity = viscosity;
   const Mesh mesh = channel_mesh(c);
-  ShallowWaterSolver solver(mesh, c);
+  FlowSolverOptions options;
+  set_reuse_from_environment(options);
+  ShallowWaterSolver solver(mesh, c, options);
   const auto start = Clock::now();
   solver.initialize();
   const SteadyReport report = solver.solve_steady();
@@ -113,6 +131,7 @@ int run_steady(double mesh_size, double viscosity) {
   for (size_t k = 0; k < report.residuals.size(); ++k)
     std::printf("  %zu nu %.4g: %.3e\n", k, report.viscosities[k], report.residuals[k]);
   std::printf("peak memory %.1f MiB\n", peak_memory_mib());
+  print_linear_solver_counts(solver);
   return report.converged ? 0 : 1;
 }
 
@@ -121,6 +140,7 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   const Mesh mesh = channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
+  set_reuse_from_environment(options);
   ShallowWaterSolver solver(mesh, c, options);
   const auto start = Clock::now();
   solver.initialize();
@@ -167,6 +187,7 @@ int run_scaling(double mesh_size, int steps, double dt) {
   FlowSolverOptions options;
   const char* kind = std::getenv("FLOTSAM_FLOW_SOLVER");
   if (kind && std::string(kind) == "klu") options.linear_solver = LinearSolverKind::klu;
+  set_reuse_from_environment(options);
   ShallowWaterSolver solver(mesh, c, options);
   const auto setup_start = Clock::now();
   solver.initialize();
@@ -182,6 +203,7 @@ int run_scaling(double mesh_size, int steps, double dt) {
       mesh_size, mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count,
       omp_get_max_threads(), mesh_wall, setup_wall, 1e3 * wall / steps,
       static_cast<double>(iterations) / steps, peak_memory_mib());
+  print_linear_solver_counts(solver);
   return 0;
 }
 

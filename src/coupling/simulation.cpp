@@ -215,6 +215,8 @@ void Simulation::write_output_if_due(bool force) {
   output_->write(time_, *flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
   write_checkpoint((output_->directory() / "checkpoint.bin").string());
+  flow_->start_fresh_factorisation();  // as a run restarted from this checkpoint does
+  if (reference_flow_) reference_flow_->start_fresh_factorisation();
 }
 
 void Simulation::run() {

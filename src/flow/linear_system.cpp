@@ -2,8 +2,6 @@
 #pragma GCC diagnostic ignored "-Wnull-dereference"
 #include "flow/linear_system.hpp"
 
-#include <Eigen/KLUSupport>
-#include <Eigen/UmfPackSupport>
 #include <algorithm>
 #include <cstdint>
 
@@ -37,6 +35,19 @@ void LinearSystem::setup(const Mesh& mesh, const std::vector<int>& dirichlet_row
   A.setFromTriplets(entries.begin(), entries.end());
   A.makeCompressed();
   b = Eigen::VectorXd::Zero(n);
+  // Per element, the position of the first entry of each of its 9 x 9 node blocks (row node,
+  // column node; nodes in the order u of the six P2 nodes, then eta of the three vertices).
+  constexpr std::array<int, 9> first_row = {
+      local_velocity(0, 0), local_velocity(1, 0), local_velocity(2, 0),
+      local_velocity(3, 0), local_velocity(4, 0), local_velocity(5, 0),
+      local_elevation(0),   local_elevation(1),   local_elevation(2)};
+  block_positions_.resize(static_cast<size_t>(mesh.element_count()) * 81);
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    const auto rows = element_rows(mesh, e);
+    int* block = block_positions_.data() + static_cast<size_t>(e) * 81;
+    for (int c : first_row)
+      for (int r : first_row) *block++ = position(rows[r], rows[c]);
+  }
 
   dirichlet_rows_ = dirichlet_rows;
   slip_nodes_ = slip_nodes;
@@ -81,11 +92,38 @@ int LinearSystem::position(int row, int column) const {
   return static_cast<int>(std::lower_bound(begin, end, row) - A.innerIndexPtr());
 }
 
-void LinearSystem::add(const std::array<int, 15>& rows, const LocalMatrix& K,
+// The pattern holds full 2x2 node blocks (setup), so one stored position gives up to four
+// entries: in column 2n (u of node n) the v row 2m+1 of node m follows its u row 2m, and column
+// 2n+1 (v of node n), stored right after column 2n, has the same rows, its entries shifted by the
+// length of column 2n. Each entry receives the element's contributions in element order
+// (deterministic).
+void LinearSystem::add(int element, const std::array<int, 15>& rows, const LocalMatrix& K,
                        const LocalVector& F) {
   double* values = A.valuePtr();
-  for (int j = 0; j < 15; ++j)
-    for (int i = 0; i < 15; ++i) values[position(rows[i], rows[j])] += K(i, j);
+  const int* outer = A.outerIndexPtr();
+  const int* block = block_positions_.data() + static_cast<size_t>(element) * 81;
+  for (int c = 0; c < 6; ++c, block += 9) {  // columns u and v of node c
+    const int column = rows[local_velocity(c, 0)];
+    const int shift = outer[column + 1] - outer[column];
+    for (int a = 0; a < 6; ++a) {
+      const int p = block[a];
+      values[p] += K(local_velocity(a, 0), local_velocity(c, 0));
+      values[p + 1] += K(local_velocity(a, 1), local_velocity(c, 0));
+      values[p + shift] += K(local_velocity(a, 0), local_velocity(c, 1));
+      values[p + shift + 1] += K(local_velocity(a, 1), local_velocity(c, 1));
+    }
+    for (int j = 0; j < 3; ++j) {
+      values[block[6 + j]] += K(local_elevation(j), local_velocity(c, 0));
+      values[block[6 + j] + shift] += K(local_elevation(j), local_velocity(c, 1));
+    }
+  }
+  for (int k = 0; k < 3; ++k, block += 9) {  // column eta of vertex k
+    for (int a = 0; a < 6; ++a) {
+      values[block[a]] += K(local_velocity(a, 0), local_elevation(k));
+      values[block[a] + 1] += K(local_velocity(a, 1), local_elevation(k));
+    }
+    for (int j = 0; j < 3; ++j) values[block[6 + j]] += K(local_elevation(j), local_elevation(k));
+  }
   for (int i = 0; i < 15; ++i) b[rows[i]] += F(i);
 }
 
@@ -129,44 +167,6 @@ double LinearSystem::saved_row_residual(int slot, const Eigen::VectorXd& x) cons
   double r = -saved_rhs_[slot];
   for (size_t i = 0; i < list.column.size(); ++i) r += saved_values_[slot][i] * x[list.column[i]];
   return r;
-}
-
-// ---- solver -------------------------------------------------------------------------------
-
-struct SparseDirectSolver::Impl {
-  LinearSolverKind kind;
-  bool analysed = false;
-  Eigen::UmfPackLU<SparseMatrix> umfpack;
-  Eigen::KLU<SparseMatrix> klu;
-};
-
-SparseDirectSolver::SparseDirectSolver(LinearSolverKind kind) : impl_(std::make_unique<Impl>()) {
-  impl_->kind = kind;
-  // No iterative refinement: LU with partial pivoting already leaves a residual at round-off
-  // on these systems (the water balance closes to 1e-15), and each refinement step costs a solve
-  // and a product with A.
-  impl_->umfpack.umfpackControl()(UMFPACK_IRSTEP) = 0;
-}
-SparseDirectSolver::~SparseDirectSolver() = default;
-SparseDirectSolver::SparseDirectSolver(SparseDirectSolver&&) noexcept = default;
-SparseDirectSolver& SparseDirectSolver::operator=(SparseDirectSolver&&) noexcept = default;
-
-bool SparseDirectSolver::factorize(const SparseMatrix& A) {
-  if (impl_->kind == LinearSolverKind::umfpack) {
-    if (!impl_->analysed) impl_->umfpack.analyzePattern(A);
-    impl_->analysed = true;
-    impl_->umfpack.factorize(A);
-    return impl_->umfpack.info() == Eigen::Success;
-  }
-  if (!impl_->analysed) impl_->klu.analyzePattern(A);
-  impl_->analysed = true;
-  impl_->klu.factorize(A);
-  return impl_->klu.info() == Eigen::Success;
-}
-
-Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& b) const {
-  if (impl_->kind == LinearSolverKind::umfpack) return impl_->umfpack.solve(b);
-  return impl_->klu.solve(b);
 }
 
 // ---- colouring ----------------------------------------------------------------------------

@@ -17,7 +17,8 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
       case_(flow_case),
       options_(std::move(options)),
       bc_(resolve_boundary_conditions(mesh, flow_case.flow, flow_case.file)),
-      solver_(options_.linear_solver) {}
+      solver_(
+          {.kind = options_.linear_solver, .reuse_factorisation = options_.reuse_factorisation}) {}
 
 // ---- setup ----------------------------------------------------------------------------------
 
@@ -108,6 +109,7 @@ void ShallowWaterSolver::set_state(const FlowState& s) {
   state_ = s;
   previous_ = s;
   linearisation_ = s;
+  solver_.refactorise();
   double H_sum = 0.0, A_sum = 0.0;
   for (int j = 0; j < mesh_.vertex_count; ++j) {
     H_sum += lumped_p1_[j] * (s.eta[j] - z_b_[j]);
@@ -216,7 +218,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     LocalMatrix K;
     LocalVector F;
     assemble_element(p, ev, s, K, F);
-    system_.add(system_.element_rows(mesh_, e), K, F);
+    system_.add(e, system_.element_rows(mesh_, e), K, F);
   });
 
   if (!it.characteristics) assemble_inflow_stabilisation();
@@ -303,12 +305,15 @@ void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
 }
 
 Eigen::VectorXd ShallowWaterSolver::solve() {
-  if (!solver_.factorize(system_.A))
+  Eigen::VectorXd x;
+  if (solver_.solve(system_.A, system_.b, x)) return x;
+  if (solver_.failure() == FactorizationFailure::singular)
     throw_run_error(
-        "flow: t = {:.6g} s: the sparse LU factorisation failed (singular system): "
-        "check the boundary conditions of mesh {}",
-        linearisation_.time, mesh_.source);
-  return solver_.solve(system_.b);
+        "flow: t = {:.6g} s: the sparse LU factorisation failed: {}: check the boundary "
+        "conditions of mesh {}",
+        linearisation_.time, solver_.failure_message(), mesh_.source);
+  throw_run_error("flow: t = {:.6g} s: the sparse LU factorisation failed: {} (mesh {})",
+                  linearisation_.time, solver_.failure_message(), mesh_.source);
 }
 
 Eigen::VectorXd ShallowWaterSolver::pack(const FlowState& s) const {

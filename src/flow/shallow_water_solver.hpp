@@ -2,8 +2,9 @@
 // The FEM shallow-water engine (spec 1, paper section 2): P2 velocity / P1 elevation
 // (Taylor-Hood) Galerkin finite elements with SUPG, a theta-scheme in time linearised by
 // Newton's method at each step, and one coupled sparse system in (u, v, eta) per iteration,
-// solved by a sparse direct LU whose symbolic analysis is reused. docs/model.md "Flow (spec 1)"
-// gives the weak form (element_assembly.hpp), the choices and the departures.
+// solved by a sparse direct LU whose symbolic analysis is reused, and whose numeric factors are
+// kept across steps as BiCGSTAB's preconditioner (linear_solver.hpp). docs/model.md "Flow
+// (spec 1)" gives the weak form (element_assembly.hpp), the choices and the departures.
 //
 // Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
 // -> solve] per iteration -> check_state; step() and solve_steady() call them in order.
@@ -17,6 +18,7 @@
 #include "flow/characteristics.hpp"
 #include "flow/element_assembly.hpp"
 #include "flow/flow_state.hpp"
+#include "flow/linear_solver.hpp"
 #include "flow/linear_system.hpp"
 #include "flow/mass_matrix.hpp"
 #include "flow/water_balance.hpp"
@@ -41,6 +43,9 @@ struct FlowSolverOptions {
   double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
   bool supg = true;                   // SUPG stabilisation of advection (Advection::supg)
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
+  // Keep the LU across solves as BiCGSTAB's preconditioner, refactorising when BiCGSTAB misses
+  // its tolerance in its iterations (linear_solver.hpp).
+  bool reuse_factorisation = true;
   // [s] largest pseudo time step of the steady solve's Newton iterations (a small time term
   // keeps the linearised steady problem regular: closed basins, u = 0); 0: 1e5 h_min / sqrt(g H).
   double steady_pseudo_dt = 0.0;
@@ -73,8 +78,13 @@ class ShallowWaterSolver {
   /// Bed, initial state (still water, eta linear in x between FlowConfig's initial values),
   /// sparsity pattern. Throws InputError when a node starts with a depth below the dry depth.
   void initialize();
-  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition.
+  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition. The
+  /// next linear solve factorises afresh.
   void set_state(const FlowState& state);
+  /// The next linear solve factorises afresh instead of reusing the last LU
+  /// (FlowSolverOptions::reuse_factorisation). At a checkpoint: a run restarted from it starts
+  /// with a fresh LU, so the run that goes on must too for both to stay the same bit for bit.
+  void start_fresh_factorisation() { solver_.refactorise(); }
 
   /// Advances the flow by dt [s]. Throws RunError when a node dries or the solution is not
   /// finite; the state is then left at the start of the step.
@@ -117,6 +127,8 @@ class ShallowWaterSolver {
   const Mesh& mesh() const { return mesh_; }
   const Case& flow_case() const { return case_; }
   const BoundaryConditions& boundary_conditions() const { return bc_; }
+  /// Solves, factorisations and Krylov iterations of the linear solver so far.
+  const LinearSolverCounts& linear_solver_counts() const { return solver_.counts(); }
 
  private:
   struct Iteration {  // the linearised problem of one iteration
@@ -149,7 +161,7 @@ class ShallowWaterSolver {
   FlowSolverOptions options_;
   BoundaryConditions bc_;
   LinearSystem system_;
-  SparseDirectSolver solver_;
+  LinearSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
   std::optional<P2MassMatrix> mass_;               // with characteristics

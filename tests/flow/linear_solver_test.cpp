@@ -1,0 +1,74 @@
+// Verifies that the linear solver that keeps its LU solves a slightly changed matrix by BiCGSTAB
+// preconditioned with the old LU, to its tolerance and without a new factorisation, and that it
+// refactorises when the matrix changed too much for BiCGSTAB or when told to.
+#include <gtest/gtest.h>
+
+#include "flow/linear_solver.hpp"
+
+namespace flotsam {
+namespace {
+
+// Advection-diffusion on n points: -d u'' + c u' + s u, unsymmetric, with s the time term.
+SparseMatrix advection_diffusion(int n, double c, double s) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 2.0 + s);
+    if (i > 0) entries.emplace_back(i, i - 1, -1.0 - c);
+    if (i + 1 < n) entries.emplace_back(i, i + 1, -1.0 + c);
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  A.makeCompressed();
+  return A;
+}
+
+double relative_residual(const SparseMatrix& A, const Eigen::VectorXd& x,
+                         const Eigen::VectorXd& b) {
+  return (b - A * x).norm() / b.norm();
+}
+
+TEST(LinearSolver, ReusedLuSolvesASlightlyChangedMatrixToItsTolerance) {
+  const int n = 400;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  LinearSolver solver({.reuse_factorisation = true});
+  Eigen::VectorXd x;
+  SparseMatrix A = advection_diffusion(n, 0.3, 0.1);
+  ASSERT_TRUE(solver.solve(A, b, x));
+  EXPECT_EQ(solver.counts().factorisations, 1);
+
+  A = advection_diffusion(n, 0.31, 0.1);  // same pattern, values a few per cent off
+  ASSERT_TRUE(solver.solve(A, b, x));
+  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+  EXPECT_EQ(solver.counts().factorisations, 1);
+  EXPECT_GT(solver.counts().krylov_iterations, 0);
+
+  solver.refactorise();
+  ASSERT_TRUE(solver.solve(A, b, x));
+  EXPECT_EQ(solver.counts().factorisations, 2);
+}
+
+TEST(LinearSolver, RefactorisesWhenBiCgstabMissesItsTolerance) {
+  const int n = 400;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  LinearSolver solver({.reuse_factorisation = true, .max_iterations = 2});
+  Eigen::VectorXd x;
+  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
+  const SparseMatrix A = advection_diffusion(n, -0.9, 0.001);  // far from the first
+  ASSERT_TRUE(solver.solve(A, b, x));
+  EXPECT_EQ(solver.counts().krylov_failures, 1);
+  EXPECT_EQ(solver.counts().factorisations, 2);
+  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+}
+
+TEST(LinearSolver, WithoutReuseEverySolveFactorises) {
+  const int n = 50;
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+  LinearSolver solver;
+  Eigen::VectorXd x;
+  for (int k = 0; k < 3; ++k) ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.1 * k, 1.0), b, x));
+  EXPECT_EQ(solver.counts().factorisations, 3);
+  EXPECT_EQ(solver.counts().krylov_iterations, 0);
+}
+
+}  // namespace
+}  // namespace flotsam
