@@ -4,14 +4,15 @@
 //
 //   cmake --build <build> --target bench_flow_channel
 //   <build>/bench/bench_flow_channel steady [mesh_size] [viscosity]
-//   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file]
+//   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file] [viscosity]
 //   <build>/bench/bench_flow_channel compare STATE_A STATE_B
 //   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
 //
 // steady: solve_steady from still water (at the case's viscosity, or the one given [m^2/s]; mesh
 // size 0: the case's), wall time and residual history. unsteady: T_END [s]
 // (default 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time,
-// time per step, Newton iterations; writes the final state to state_file when given. compare:
+// time per step, Newton iterations, the discharge at the end; writes the final state to
+// state_file when given ("-": none); viscosity [m^2/s] replaces the case's when given. compare:
 // max |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B and the same for |u| of two
 // saved states of the same mesh. scaling: STEPS steps at DT (default 1 s) on the channel with
 // far-field size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step
@@ -135,8 +136,10 @@ int run_steady(double mesh_size, double viscosity) {
   return report.converged ? 0 : 1;
 }
 
-int run_unsteady(double dt, double t_end, double mesh_size, const std::string& state_file) {
-  const Case c = channel_case(mesh_size);
+int run_unsteady(double dt, double t_end, double mesh_size, const std::string& state_file,
+                 double viscosity) {
+  Case c = channel_case(mesh_size);
+  if (viscosity > 0.0) c.flow.viscosity = viscosity;
   const Mesh mesh = channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
@@ -154,7 +157,10 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
       mesh.element_count(), omp_get_max_threads(), dt, steps, solver.time(), wall,
       1e3 * wall / steps, static_cast<double>(iterations) / steps,
       solver.water_balance().relative_error(), peak_memory_mib());
-  if (!state_file.empty()) write_state(state_file, solver.state());
+  const auto& rate = solver.water_balance().group_rate;  // [m^3/s] out, last step
+  std::printf("discharge in %.2f m^3/s, out %.2f m^3/s\n", -rate[mesh.find_group("inflow")],
+              rate[mesh.find_group("outflow")]);
+  if (!state_file.empty() && state_file != "-") write_state(state_file, solver.state());
   return 0;
 }
 
@@ -220,7 +226,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args[0] == "steady") return run_steady(number(1, 0.0), number(2, 0.0));
     if (args.size() >= 2 && args[0] == "unsteady")
       return run_unsteady(number(1, 1.0), number(2, 3600.0), number(3, 0.0),
-                          args.size() > 4 ? args[4] : "");
+                          args.size() > 4 ? args[4] : "", number(5, 0.0));
     if (args.size() >= 3 && args[0] == "compare") return run_compare(args[1], args[2]);
     if (args.size() >= 3 && args[0] == "scaling")
       return run_scaling(number(1, 14.5), static_cast<int>(number(2, 10)), number(3, 1.0));
