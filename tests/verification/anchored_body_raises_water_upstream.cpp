@@ -123,10 +123,11 @@ TEST(AnchoredBodyRaisesWaterUpstream, RiseGrowsWithBlockageAndBalancesTheDrag) {
   EXPECT_GT(rise_half, 1.5 * rise_quarter);  // drag ~ blocked width: about twice the rise
   std::printf("upstream rise %.4f m (5 m blocked), %.4f m (10 m blocked)\n", rise_quarter,
               rise_half);
-  // Tolerances: 15% with a quarter of the width blocked; 45% with half of it, where the wake is
+  // Tolerances: 10% with a quarter of the width blocked; 25% with half of it, where the wake is
   // a jet beside a separated eddy and the advective form of (M-1a), which does not conserve
-  // momentum exactly, loses 41% (docs/validation.md).
-  for (const auto& [r, tolerance] : {std::pair{quarter, 0.15}, std::pair{half, 0.45}}) {
+  // momentum exactly, loses 17% (41% before the explicit slope went to the departure point;
+  // docs/validation.md).
+  for (const auto& [r, tolerance] : {std::pair{quarter, 0.10}, std::pair{half, 0.25}}) {
     const double held = r.momentum_drop - free_flow.momentum_drop;  // [N]
     EXPECT_NEAR(held, r.reaction, tolerance * r.reaction);
     std::printf("momentum held %.1f N, exchanged %.1f N: %.1f %%\n", held, r.reaction,
