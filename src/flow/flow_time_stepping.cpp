@@ -66,7 +66,7 @@ StepReport ShallowWaterSolver::step(double dt) {
 // projected on P2, is carried along the paths of u^n to every node. The explicit terms are then
 // taken where the water was at t^n, the departure point, rather than where it arrives: the
 // steady state of the scheme then differs from the Eulerian one by O((theta - 1/2) dt) instead
-// of O(dt / 2) (docs/model.md "Time stepping").
+// of O(dt / 2) (docs/model.md "Time scheme").
 void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
   const AssemblyParameters p = assembly_parameters(it);
   const int n = mesh_.node_count();
