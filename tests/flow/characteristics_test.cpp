@@ -55,3 +55,35 @@ TEST(Characteristics, StillWaterStaysStill) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// The carried field is not the velocity: in a uniform flow (U, 0) the path from x is the
+// straight segment back to x - U dt (the midpoint rule is exact), so a carried quadratic field
+// q = (x^2, y) arrives as ((x - U dt)^2, y), to round-off (tolerance 1e-9 of q's range), at
+// every node whose path stays inside.
+TEST(Characteristics, CarriesAFieldOtherThanTheVelocity) {
+  const double L = 100.0, W = 20.0, U = 1.5, dt = 12.0;  // [m], [m], [m/s], [s]
+  const Mesh mesh = make_rectangle_mesh({.length = L, .width = W, .nx = 20, .ny = 4});
+  std::vector<double> u(mesh.node_count(), U), v(mesh.node_count(), 0.0);
+  std::vector<double> q_x(mesh.node_count()), q_y(mesh.node_count()), q_x_d, q_y_d;
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    q_x[i] = mesh.nodes[i].x() * mesh.nodes[i].x();
+    q_y[i] = mesh.nodes[i].y();
+  }
+  Characteristics(mesh).advect(u, v, dt, q_x, q_y, q_x_d, q_y_d);
+  int checked = 0;
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const Vec2& p = mesh.nodes[i];
+    if (p.x() < U * dt + 1e-9) continue;  // its path leaves through the inflow
+    const double foot = p.x() - U * dt;
+    EXPECT_NEAR(q_x_d[i], foot * foot, 1e-9 * L * L) << "node " << i;
+    EXPECT_NEAR(q_y_d[i], p.y(), 1e-9 * L) << "node " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, mesh.node_count() / 2);
+}
+
+}  // namespace
+}  // namespace flotsam
