@@ -101,7 +101,7 @@ TEST(CaseFile, BridgePiersExampleHoldsThePapersChannel) {
   EXPECT_NO_THROW(check_case_against_mesh(c, channel_groups));
 
   EXPECT_EQ(c.time.end, 1800.0);
-  EXPECT_EQ(c.time.step, 5.0);
+  EXPECT_EQ(c.time.step, 1.0);
   EXPECT_EQ(c.time.mode, CouplingMode::two_way);
   EXPECT_EQ(c.bodies.contact.restitution, 1.0);
   ASSERT_EQ(c.bodies.bodies.size(), 7u);
