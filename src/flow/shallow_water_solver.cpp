@@ -116,6 +116,10 @@ void ShallowWaterSolver::set_state(const FlowState& s) {
     A_sum += lumped_p1_[j];
   }
   H_mean_ = H_sum / A_sum;
+  restart_water_balance();
+}
+
+void ShallowWaterSolver::restart_water_balance() {
   balance_ = WaterBalance{};
   balance_.initial_volume = balance_.volume = volume();
   balance_.group_outflow.assign(mesh_.group_names.size(), 0.0);
@@ -167,7 +171,6 @@ ElementState ShallowWaterSolver::element_state(int e, bool characteristics) cons
     s.eta_n[j] = n.eta[el[j]];
   }
   if (!element_forces_.empty()) s.element_force = element_forces_[e];
-  s.nu_e = case_.flow.viscosity + nu_t_[e];  // (M-3)
   return s;
 }
 

@@ -138,6 +138,7 @@ class ShallowWaterSolver {
   };
   void setup_system();
   AssemblyParameters assembly_parameters(const Iteration& it) const;
+  // The nodal values of element e (all but nu_e, which assemble_system sets).
   ElementState element_state(int e, bool characteristics) const;
   void for_each_element(const std::function<void(int)>& visit) const;
   void departure_values(const Iteration& it, double dt);
@@ -150,6 +151,7 @@ class ShallowWaterSolver {
   Eigen::VectorXd pack(const FlowState& s) const;
   void record_fluxes(const Eigen::VectorXd& x);
   void update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x);
+  void restart_water_balance();  // V(0) = V now, nothing through the boundaries yet
   void check_state(const FlowState& s, double t) const;
   double residual_norm(const Eigen::VectorXd& x) const;
   double steady_residual(const Iteration& it);

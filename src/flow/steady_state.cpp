@@ -156,9 +156,7 @@ SteadyReport ShallowWaterSolver::solve_steady() {
   steady_residual(it);
   record_fluxes(pack(state_));
   const std::vector<double> rates = balance_.group_rate;
-  balance_ = WaterBalance{};
-  balance_.initial_volume = balance_.volume = volume();
-  balance_.group_outflow.assign(mesh_.group_names.size(), 0.0);
+  restart_water_balance();
   balance_.group_rate = rates;
   return report;
 }
@@ -166,11 +164,10 @@ SteadyReport ShallowWaterSolver::solve_steady() {
 double ShallowWaterSolver::march_to_steady(double dt, double settled, double t_max) {
   double change = 1.0;  // [-] max |u^{n+1} - u^n| / max |u^{n+1}|
   while (change > settled && state_.time < t_max) {
-    const FlowState before = state_;
-    step(dt);
+    step(dt);  // keeps the state before it in previous_
     double du = 0.0, u_max = 0.0;
-    for (std::size_t n = 0; n < before.u.size(); ++n) {
-      du = std::max(du, std::hypot(state_.u[n] - before.u[n], state_.v[n] - before.v[n]));
+    for (std::size_t n = 0; n < state_.u.size(); ++n) {
+      du = std::max(du, std::hypot(state_.u[n] - previous_.u[n], state_.v[n] - previous_.v[n]));
       u_max = std::max(u_max, std::hypot(state_.u[n], state_.v[n]));
     }
     change = u_max > 0.0 ? du / u_max : 0.0;
