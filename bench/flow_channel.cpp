@@ -34,10 +34,7 @@
 #include <vector>
 
 #include "flow/shallow_water_solver.hpp"
-#include "io/case_file.hpp"
-#include "mesh/interpolation.hpp"
-#include "mesh/mesh_generator.hpp"
-#include "mesh/point_locator.hpp"
+#include "paper_channel.hpp"
 
 namespace flotsam {
 namespace {
@@ -52,16 +49,6 @@ double peak_memory_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
-Case channel_case(double mesh_size) {
-  Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
-  if (mesh_size > 0.0) {
-    const double scale = mesh_size / c.mesh.channel.mesh_size;
-    c.mesh.channel.mesh_size = mesh_size;
-    c.mesh.channel.pier_mesh_size *= scale;
-  }
-  return c;
 }
 
 void write_state(const std::string& path, const FlowState& s) {
@@ -91,14 +78,6 @@ FlowState read_state(const std::string& path) {
   return s;
 }
 
-// generate_mesh leaves the process at one OpenMP thread (Gmsh's General.NumThreads = 1): restore.
-Mesh channel_mesh(const Case& c) {
-  const int threads = omp_get_max_threads();
-  Mesh mesh = generate_mesh(c.mesh);
-  omp_set_num_threads(threads);
-  return mesh;
-}
-
 // FLOTSAM_FLOW_REUSE_LU=1|0: the LU kept across solves or not (unset: the options' default).
 void set_reuse_from_environment(FlowSolverOptions& options) {
   if (const char* e = std::getenv("FLOTSAM_FLOW_REUSE_LU"))
@@ -114,9 +93,9 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
 }
 
 int run_steady(double mesh_size, double viscosity) {
-  Case c = channel_case(mesh_size);
+  Case c = paper_channel_case(mesh_size);
   if (viscosity > 0.0) c.flow.viscosity = viscosity;
-  const Mesh mesh = channel_mesh(c);
+  const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   set_reuse_from_environment(options);
   ShallowWaterSolver solver(mesh, c, options);
@@ -140,9 +119,9 @@ int run_steady(double mesh_size, double viscosity) {
 
 int run_unsteady(double dt, double t_end, double mesh_size, const std::string& state_file,
                  double viscosity) {
-  Case c = channel_case(mesh_size);
+  Case c = paper_channel_case(mesh_size);
   if (viscosity > 0.0) c.flow.viscosity = viscosity;
-  const Mesh mesh = channel_mesh(c);
+  const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
   set_reuse_from_environment(options);
@@ -197,10 +176,9 @@ int run_compare(const std::string& a_file, const std::string& b_file) {
 }
 
 int run_scaling(double mesh_size, int steps, double dt) {
-  Case c = channel_case(mesh_size);
-  c.mesh.channel.refine_distance *= mesh_size / 14.5;
+  const Case c = paper_channel_case(mesh_size, true);
   const auto mesh_start = Clock::now();
-  const Mesh mesh = channel_mesh(c);
+  const Mesh mesh = paper_channel_mesh(c);
   const double mesh_wall = seconds_since(mesh_start);
   FlowSolverOptions options;
   const char* kind = std::getenv("FLOTSAM_FLOW_SOLVER");
