@@ -19,8 +19,10 @@
 // with it): time per step and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
 // FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
 // KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
-// preconditioner of BiCGSTAB, or not (all modes; unset: FlowSolverOptions' default); steady and
-// scaling print the linear solver's counts.
+// preconditioner of BiCGSTAB, or not (all modes; unset: FlowSolverOptions' default),
+// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme (unsteady), FLOTSAM_FLOW_TRACE=S a line
+// every S seconds of simulated time with the discharges and the fastest node (unsteady); steady
+// and scaling print the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -117,6 +119,22 @@ int run_steady(double mesh_size, double viscosity) {
   return report.converged ? 0 : 1;
 }
 
+// t, discharge in and out, and the fastest node with its velocity (FLOTSAM_FLOW_TRACE).
+void print_trace(const ShallowWaterSolver& solver, double inflow_rate, double outflow_rate) {
+  const auto& u = solver.u();
+  const auto& v = solver.v();
+  size_t fastest = 0;
+  for (size_t i = 0; i < u.size(); ++i)
+    if (std::hypot(u[i], v[i]) > std::hypot(u[fastest], v[fastest])) fastest = i;
+  const Vec2& p = solver.mesh().nodes[fastest];
+  std::printf(
+      "t %.0f s: discharge in %.1f, out %.1f m^3/s; fastest %.3f m/s at (%.1f, %.1f), u %.2f v "
+      "%.2f\n",
+      solver.time(), -inflow_rate, outflow_rate, std::hypot(u[fastest], v[fastest]), p.x(), p.y(),
+      u[fastest], v[fastest]);
+  std::fflush(stdout);
+}
+
 int run_unsteady(double dt, double t_end, double mesh_size, const std::string& state_file,
                  double viscosity) {
   Case c = paper_channel_case(mesh_size);
@@ -124,6 +142,10 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
+  if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME"))
+    options.time_scheme = std::string(e) == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
+  const char* trace = std::getenv("FLOTSAM_FLOW_TRACE");
+  const double trace_interval = trace ? std::atof(trace) : 0.0;  // [s]
   set_reuse_from_environment(options);
   ShallowWaterSolver solver(mesh, c, options);
   const auto start = Clock::now();
@@ -135,6 +157,8 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   double mean_in = 0.0, mean_time = 0.0;  // discharge in averaged over the last third [m^3/s]
   for (int n = 0; n < steps; ++n) {
     iterations += solver.step(dt).iterations;
+    if (trace_interval > 0.0 && std::fmod(solver.time() + 1e-9, trace_interval) < dt)
+      print_trace(solver, rate[inflow], rate[mesh.find_group("outflow")]);
     if (3 * (n + 1) > 2 * steps) {
       mean_in -= dt * rate[inflow];
       mean_time += dt;

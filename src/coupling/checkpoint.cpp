@@ -3,7 +3,8 @@
 // archive of named arrays (io/binary_archive.hpp):
 //
 //   run       time, step count, next output time, RKF45 totals, the times of the outputs
-//   flow      state (time, eta, u, v) and water balance; the same for the reference flow
+//   flow      state (time, eta, u, v), the state a step before, water balance; the same for
+//             the reference flow
 //   bodies    every per-body array (BodySet::for_each_array), outflow count, next id
 //   release   the random streams and counts of the release lines
 //   contacts  last contacts (warm start) and the sweep order
@@ -21,20 +22,14 @@ struct is_plain_struct<ContactConstraint> : std::true_type {};
 
 namespace {
 
-void write_flow(ArchiveWriter& w, const std::string& prefix, const ShallowWaterSolver& flow) {
-  const FlowState& s = flow.state();
-  const WaterBalance& b = flow.water_balance();
+void write_state(ArchiveWriter& w, const std::string& prefix, const FlowState& s) {
   w.write_value(prefix + ".time", s.time);
   w.write(prefix + ".eta", s.eta);
   w.write(prefix + ".u", s.u);
   w.write(prefix + ".v", s.v);
-  w.write(prefix + ".balance",
-          std::vector<double>{b.initial_volume, b.volume, b.outflow, b.source});
-  w.write(prefix + ".group_outflow", b.group_outflow);
-  w.write(prefix + ".group_rate", b.group_rate);
 }
 
-void read_flow(ArchiveReader& r, const std::string& prefix, ShallowWaterSolver& flow) {
+FlowState read_state(ArchiveReader& r, const std::string& prefix, const ShallowWaterSolver& flow) {
   FlowState s;
   s.time = r.read_value<double>(prefix + ".time");
   s.eta = r.read<double>(prefix + ".eta");
@@ -45,11 +40,28 @@ void read_flow(ArchiveReader& r, const std::string& prefix, ShallowWaterSolver& 
         "{}: the checkpoint's flow has {} vertices and {} nodes, the case's mesh "
         "{} and {}: the case or its mesh changed since the run",
         r.path(), s.eta.size(), s.u.size(), flow.eta().size(), flow.u().size());
-  flow.set_state(s);
+  return s;
+}
+
+// The flow's state and the one a step before it (BDF2's history), and its water balance.
+void write_flow(ArchiveWriter& w, const std::string& prefix, const ShallowWaterSolver& flow) {
+  const WaterBalance& b = flow.water_balance();
+  write_state(w, prefix, flow.state());
+  write_state(w, prefix + ".previous", flow.previous_state());
+  w.write(prefix + ".balance",
+          std::vector<double>{b.initial_volume, b.volume, b.outflow, b.source, b.lag});
+  w.write(prefix + ".group_outflow", b.group_outflow);
+  w.write(prefix + ".group_rate", b.group_rate);
+}
+
+void read_flow(ArchiveReader& r, const std::string& prefix, ShallowWaterSolver& flow) {
+  const FlowState s = read_state(r, prefix, flow),
+                  previous = read_state(r, prefix + ".previous", flow);
+  flow.set_state(s, &previous);
   const auto sums = r.read<double>(prefix + ".balance");
   WaterBalance b;
   b.initial_volume = sums.at(0), b.volume = sums.at(1), b.outflow = sums.at(2);
-  b.source = sums.at(3);
+  b.source = sums.at(3), b.lag = sums.at(4);
   b.group_outflow = r.read<double>(prefix + ".group_outflow");
   b.group_rate = r.read<double>(prefix + ".group_rate");
   flow.restore_water_balance(b);

@@ -254,8 +254,9 @@ std::string Simulation::summary() const {
                    case_.time.mode == CouplingMode::frozen    ? "frozen"
                    : case_.time.mode == CouplingMode::one_way ? "one-way"
                                                               : "two-way");
-  s += fmt::format("water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3\n",
-                   b.volume, b.initial_volume, b.outflow);
+  s += fmt::format("water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3{}\n",
+                   b.volume, b.initial_volume, b.outflow,
+                   b.lag != 0.0 ? fmt::format(", in BDF2's time lag {:.6g} m^3", b.lag) : "");
   s += fmt::format("water balance    {:.3g} m^3, relative {:.3g}\n", b.error(), b.relative_error());
   if (has_bodies_) {
     int floating = 0, grounded = 0;

@@ -64,11 +64,12 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       visc_k += ev.hessian2[b].trace() * ub_k + ev.hessian2[b] * ub_k;
       visc_n += ev.hessian2[b].trace() * ub_n + ev.hessian2[b] * ub_n;
     }
-    double eta_k = 0.0, eta_n = 0.0;
+    double eta_k = 0.0, eta_n = 0.0, eta_d = 0.0;
     Vec2 grad_eta_k = Vec2::Zero(), grad_eta_n = Vec2::Zero();
     for (int j = 0; j < 3; ++j) {
       eta_k += M[j] * s.eta_k[j];
       eta_n += M[j] * s.eta_n[j];
+      eta_d += M[j] * s.eta_d[j];
       grad_eta_k += s.eta_k[j] * dM[j];
       grad_eta_n += s.eta_n[j] * dM[j];
     }
@@ -163,7 +164,7 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       for (int b = 0; b < 6; ++b)
         for (int d = 0; d < 2; ++d)
           K(row, local_velocity(b, d)) -= th * dM[i][d] * H_k * N[b] * JxW;  // (9)
-      double rhs = M[i] * eta_n * p.inv_dt;                                  // (8)
+      double rhs = M[i] * eta_d * p.inv_dt;                                  // (8)
       rhs += -th * advect_i * eta_k + (1 - th) * dM[i].dot(flux_n);          // (9)
       rhs += M[i] * S;                                                       // (11)
       F(row) += rhs * JxW;

@@ -5,9 +5,11 @@
 // iterate), test functions w (P2, plus the SUPG part tau (u^k . grad) w) and q (P1):
 //
 //  momentum (M-1a), for all w:
-//    (1) (w, (u - u_d)/dt)                                          time; u_d = u^n, or the
-//                                                                   departure values of the
-//                                                                   characteristics, which then
+//    (1) (w, (u - u_d)/dt)                                          time; u_d = u^n (BDF2:
+//                                                                   a combination of u^n and
+//                                                                   u^{n-1}, and 1/dt its own),
+//                                                                   or the departure values of
+//                                                                   the characteristics, which
 //                                                                   replace (2) and SUPG and
 //                                                                   hold the (1-theta) parts of
 //                                                                   (3) and (6)
@@ -21,7 +23,8 @@
 //    (6) (w, f k x u) at theta                                      Coriolis (M-2)
 //    (7) = (w, F_wind + F_bodies + F_source)                        forcing (M-2)
 //  continuity (M-1b), conservative, for all q:
-//    (8) (q, (eta - eta^n)/dt)
+//    (8) (q, (eta - eta_d)/dt)                                       eta_d = eta^n, or BDF2's
+//                                                                   start (as u_d)
 //    (9) - (grad q, theta (H^k u + (eta - eta^k) u^k) + (1-theta) H^n u^n)     flux, Newton
 //   (10) + <q, H u . n> on discharge and velocity boundaries (open_boundary_flux); nothing on
 //        walls (no flux), elevation boundaries carry Dirichlet rows.
@@ -79,6 +82,8 @@ struct ElementState {
   std::array<double, 6> u_d, v_d;            // [m/s] time term's start: u^n, or its departure
                                              // values with characteristics
   std::array<double, 3> eta_k, eta_n;        // [m]
+  std::array<double, 3> eta_d;               // [m] the continuity's time term's start: eta^n,
+                                             // or BDF2's combination of eta^n and eta^{n-1}
   std::array<double, 6> z_b;                 // [m] P2 bed
   std::array<Vec2, 6> node_force;            // [m s^-2] per-node body force
   Vec2 element_force = Vec2::Zero();         // [m s^-2] per-element body force

@@ -26,12 +26,10 @@ double max_abs_difference(const std::vector<double>& a, const std::vector<double
 }  // namespace
 
 StepReport ShallowWaterSolver::step(double dt) {
+  if (history_) std::swap(before_, previous_);  // t^{n-1}
   previous_ = state_;
-  const double t_new = previous_.time + dt;
-  const double theta = options_.theta;
-  const bool characteristics = options_.advection == Advection::characteristics;
-  const Iteration it{theta, 1.0 / dt, t_new, previous_.time + theta * dt, characteristics};
-  if (characteristics) departure_values(it, dt);  // the advection stage of the fractional step
+  const Iteration it = time_step(dt);
+  if (it.characteristics) departure_values(it, dt);  // the advection stage of the fractional step
   const double u_scale = 1e-3 * std::sqrt(case_.flow.gravity * H_mean_);  // [m/s]
   StepReport report;
   Eigen::VectorXd x;
@@ -43,8 +41,8 @@ StepReport ShallowWaterSolver::step(double dt) {
       apply_boundary_conditions(it);
       x = solve();
       unpack(x);
-      state_.time = t_new;
-      check_state(state_, t_new);
+      state_.time = it.t_new;
+      check_state(state_, it.t_new);
       const double du = std::max(max_abs_difference(state_.u, linearisation_.u),
                                  max_abs_difference(state_.v, linearisation_.v));
       const double u_max = std::max({max_abs(state_.u), max_abs(state_.v), u_scale});
@@ -54,28 +52,75 @@ StepReport ShallowWaterSolver::step(double dt) {
     }
   } catch (const RunError&) {
     state_ = previous_;
+    if (history_) previous_ = before_;
     throw;
   }
   report.iterations = std::min(report.iterations, options_.max_iterations);
   update_balance(it, dt, x);
+  history_ = true;
   return report;
 }
 
-// The advection stage (spec 1.3): the field u^n + dt a^n, where a^n is the explicit part of the
-// theta-scheme's surface slope and Coriolis terms, -(1-theta) (g grad eta^n + f k x u^n),
-// projected on P2, is carried along the paths of u^n to every node. The explicit terms are then
-// taken where the water was at t^n, the departure point, rather than where it arrives: the
-// steady state of the scheme then differs from the Eulerian one by O((theta - 1/2) dt) instead
-// of O(dt / 2) (docs/model.md "Time scheme").
+// The time term of a step of dt (docs/model.md "Time scheme"). The theta-scheme: (u - u^n)/dt.
+// BDF2 with steps of any length, omega = dt / dt_before [-]:
+//   (u^{n+1} - u_d) inv_dt,  inv_dt = (1 + 2 omega) / ((1 + omega) dt),
+//   u_d = ((1 + omega)^2 u^n - omega^2 u^{n-1}) / (1 + 2 omega),
+// which is (3 u^{n+1} - 4 u^n + u^{n-1}) / (2 dt) at equal steps; every other term at t^{n+1}.
+// Without a history (the first step) u^{n-1} = u^n, omega = 1: (u^{n+1} - u^n) 3 / (2 dt).
+ShallowWaterSolver::Iteration ShallowWaterSolver::time_step(double dt) const {
+  const double t_n = previous_.time, t_new = t_n + dt;
+  const bool characteristics = options_.advection == Advection::characteristics;
+  if (options_.time_scheme == TimeScheme::theta) {
+    const double th = options_.theta;
+    return {th, 1.0 / dt, t_new, t_n + th * dt, characteristics};
+  }
+  Iteration it{1.0, 1.5 / dt, t_new, t_new, characteristics};
+  if (!history_) return it;
+  it.dt_before = t_n - before_.time;
+  const double omega = dt / it.dt_before;
+  it.inv_dt = (1.0 + 2.0 * omega) / ((1.0 + omega) * dt);
+  it.now = (1.0 + omega) * (1.0 + omega) / (1.0 + 2.0 * omega);
+  it.before = -omega * omega / (1.0 + 2.0 * omega);
+  return it;
+}
+
+// The advection stage (spec 1.3), the time term's start u_d at the paths' feet.
+//
+// BDF2: u^n at the foot at t^n and u^{n-1} at the foot at t^{n-1}, on paths of the velocity
+// linear in time through u^{n-1} and u^n (extrapolated between t^n and t^{n+1}).
+//
+// The theta-scheme: the field u^n + dt a^n, where a^n is the explicit part of the surface slope
+// and Coriolis terms, -(1-theta) (g grad eta^n + f k x u^n), projected on P2, is carried along
+// the paths of u^n to every node. The explicit terms are then taken where the water was at t^n,
+// the departure point, rather than where it arrives: the steady state of the scheme then
+// differs from the Eulerian one by O((theta - 1/2) dt) instead of O(dt / 2).
 void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
+  const FlowState& n = previous_;
+  if (options_.time_scheme == TimeScheme::bdf2) {
+    if (it.before == 0.0) {
+      characteristics_->advect(n.u, n.v, dt, n.u, n.v, u_departure_, v_departure_);
+      return;
+    }
+    std::vector<double> u_before, v_before;  // [m/s] u^{n-1} at the foot at t^{n-1}
+    const Foot feet[2] = {{dt, n.u, n.v, u_departure_, v_departure_},
+                          {dt + it.dt_before, before_.u, before_.v, u_before, v_before}};
+    characteristics_->advect(PathVelocity{n.u, n.v, before_.u, before_.v, it.dt_before}, dt, feet);
+    for (int i = 0; i < mesh_.node_count(); ++i) {
+      u_departure_[i] = it.now * u_departure_[i] + it.before * u_before[i];
+      v_departure_[i] = it.now * v_departure_[i] + it.before * v_before[i];
+    }
+    return;
+  }
+  Iteration explicit_part = it;  // element_state's u_d is not used here
+  explicit_part.characteristics = false;
   const AssemblyParameters p = assembly_parameters(it);
-  const int n = mesh_.node_count();
-  std::vector<double> a_x(n, 0.0), a_y(n, 0.0);  // [m^3 s^-2] load, then [m s^-2]
+  const int count = mesh_.node_count();
+  std::vector<double> a_x(count, 0.0), a_y(count, 0.0);  // [m^3 s^-2] load, then [m s^-2]
   for_each_element([&](int e) {
     ElementValues ev;
     compute_element_values(mesh_, e, ev);
     std::array<Vec2, 6> F;
-    assemble_explicit_momentum(p, ev, element_state(e, false), F);
+    assemble_explicit_momentum(p, ev, element_state(e, explicit_part), F);
     const auto& el = mesh_.elements[e];
     for (int a = 0; a < 6; ++a) {
       a_x[el[a]] += F[a].x();
@@ -84,11 +129,11 @@ void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
   });
   mass_->project(a_x);
   mass_->project(a_y);
-  for (int i = 0; i < n; ++i) {
-    a_x[i] = previous_.u[i] + dt * a_x[i];
-    a_y[i] = previous_.v[i] + dt * a_y[i];
+  for (int i = 0; i < count; ++i) {
+    a_x[i] = n.u[i] + dt * a_x[i];
+    a_y[i] = n.v[i] + dt * a_y[i];
   }
-  characteristics_->advect(previous_.u, previous_.v, dt, a_x, a_y, u_departure_, v_departure_);
+  characteristics_->advect(n.u, n.v, dt, a_x, a_y, u_departure_, v_departure_);
 }
 
 // Boundary velocities at t^{n+1}: velocity and zero nodes take their value; discharge nodes
@@ -154,8 +199,14 @@ void ShallowWaterSolver::record_fluxes(const Eigen::VectorXd& x) {
     balance_.group_rate[elevation_group_[k]] -= system_.saved_row_residual(static_cast<int>(k), x);
 }
 
+// The rows sum to inv_dt (V^{n+1} - now V^n - before V^{n-1}) = S - F (water_balance.hpp): the
+// volume changes by dt (S - F) plus what BDF2 holds back in its time lag, which is zero for
+// the theta-scheme (inv_dt dt = now = 1, before = 0).
 void ShallowWaterSolver::update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x) {
   record_fluxes(x);
+  const double V_new = volume(), V_n = balance_.volume;
+  const double V_before = it.before != 0.0 ? volume_of(before_) : 0.0;
+  balance_.lag += V_new - V_n - dt * it.inv_dt * (V_new - it.now * V_n - it.before * V_before);
   for (size_t g = 0; g < balance_.group_rate.size(); ++g) {
     balance_.group_outflow[g] += dt * balance_.group_rate[g];
     balance_.outflow += dt * balance_.group_rate[g];
@@ -168,7 +219,7 @@ void ShallowWaterSolver::update_balance(const Iteration& it, double dt, const Ei
         balance_.source += dt * options_.source(ev.x[q], it.t_source).continuity * ev.JxW[q];
     }
   }
-  balance_.volume = volume();
+  balance_.volume = V_new;
 }
 
 void ShallowWaterSolver::check_state(const FlowState& s, double t) const {

@@ -91,7 +91,7 @@ void ShallowWaterSolver::setup_system() {
   }
 }
 
-void ShallowWaterSolver::set_state(const FlowState& s) {
+void ShallowWaterSolver::set_state(const FlowState& s, const FlowState* before) {
   const auto depth_at = [&](int node, const FlowState& st) {
     if (node < mesh_.vertex_count) return st.eta[node] - z_b_[node];
     return 0.0;  // mid nodes are checked through check_state
@@ -107,7 +107,8 @@ void ShallowWaterSolver::set_state(const FlowState& s) {
           mesh_.node_tags.empty() ? j : mesh_.node_tags[j], mesh_.nodes[j].x(), mesh_.nodes[j].y(),
           mesh_.source, H_dry, s.eta[j], z_b_[j]);
   state_ = s;
-  previous_ = s;
+  history_ = before && before->time < s.time;
+  previous_ = history_ ? *before : s;
   linearisation_ = s;
   solver_.refactorise();
   double H_sum = 0.0, A_sum = 0.0;
@@ -126,8 +127,12 @@ void ShallowWaterSolver::restart_water_balance() {
 }
 
 double ShallowWaterSolver::volume() const {
+  return volume_of(state_);
+}
+
+double ShallowWaterSolver::volume_of(const FlowState& s) const {
   double v = -bed_volume_;
-  for (int j = 0; j < mesh_.vertex_count; ++j) v += lumped_p1_[j] * state_.eta[j];
+  for (int j = 0; j < mesh_.vertex_count; ++j) v += lumped_p1_[j] * s.eta[j];
   return v;
 }
 
@@ -151,24 +156,32 @@ AssemblyParameters ShallowWaterSolver::assembly_parameters(const Iteration& it) 
   return p;
 }
 
-ElementState ShallowWaterSolver::element_state(int e, bool characteristics) const {
+ElementState ShallowWaterSolver::element_state(int e, const Iteration& it) const {
   const auto& el = mesh_.elements[e];
   const FlowState& k = linearisation_;
   const FlowState& n = previous_;
+  const bool history = it.before != 0.0;  // BDF2: before_ holds t^{n-1}
   ElementState s;
   for (int a = 0; a < 6; ++a) {
-    s.u_k[a] = k.u[el[a]];
-    s.v_k[a] = k.v[el[a]];
-    s.u_n[a] = n.u[el[a]];
-    s.v_n[a] = n.v[el[a]];
-    s.u_d[a] = characteristics ? u_departure_[el[a]] : s.u_n[a];
-    s.v_d[a] = characteristics ? v_departure_[el[a]] : s.v_n[a];
-    s.z_b[a] = z_b_[el[a]];
-    s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[el[a]];
+    const int node = el[a];
+    s.u_k[a] = k.u[node];
+    s.v_k[a] = k.v[node];
+    s.u_n[a] = n.u[node];
+    s.v_n[a] = n.v[node];
+    if (it.characteristics) {
+      s.u_d[a] = u_departure_[node];
+      s.v_d[a] = v_departure_[node];
+    } else {
+      s.u_d[a] = it.now * n.u[node] + (history ? it.before * before_.u[node] : 0.0);
+      s.v_d[a] = it.now * n.v[node] + (history ? it.before * before_.v[node] : 0.0);
+    }
+    s.z_b[a] = z_b_[node];
+    s.node_force[a] = node_forces_.empty() ? Vec2::Zero() : node_forces_[node];
   }
   for (int j = 0; j < 3; ++j) {
     s.eta_k[j] = k.eta[el[j]];
     s.eta_n[j] = n.eta[el[j]];
+    s.eta_d[j] = it.now * n.eta[el[j]] + (history ? it.before * before_.eta[el[j]] : 0.0);
   }
   if (!element_forces_.empty()) s.element_force = element_forces_[e];
   return s;
@@ -196,7 +209,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
   for_each_element([&](int e) {
     ElementValues ev;
     compute_element_values(mesh_, e, ev);
-    ElementState s = element_state(e, it.characteristics);
+    ElementState s = element_state(e, it);
     if (flow.turbulence != TurbulenceModel::none) {
       ElementFlowAverage avg;
       for (int q = 0; q < triangle_point_count; ++q)

@@ -33,9 +33,17 @@ enum class Advection {
   supg,             // Eulerian, SUPG-stabilised, inside the Newton iterations
 };
 
+/// How the time derivative of (M-1) is discretised (docs/model.md "Time scheme").
+enum class TimeScheme {
+  bdf2,   // second-order backward differences, all terms at t^{n+1}; the first step after
+          // initialize() or set_state() without a history takes u^{n-1} = u^n
+  theta,  // the theta-scheme with FlowSolverOptions::theta (first order unless theta = 1/2)
+};
+
 /// Numerical choices of the engine (not physics: those are in FlowConfig).
 struct FlowSolverOptions {
-  double theta = 0.6;  // [-] 0.5: Crank-Nicolson (no damping), 1: backward Euler
+  TimeScheme time_scheme = TimeScheme::theta;
+  double theta = 0.6;  // [-] of TimeScheme::theta: 0.5 Crank-Nicolson, 1 backward Euler
   Advection advection = Advection::characteristics;
   // Newton iterations per step. With characteristics one is the semi-implicit scheme: the
   // (u, eta) system linearised about t^n (friction, depth in the flux); SUPG needs about three.
@@ -78,9 +86,10 @@ class ShallowWaterSolver {
   /// Bed, initial state (still water, eta linear in x between FlowConfig's initial values),
   /// sparsity pattern. Throws InputError when a node starts with a depth below the dry depth.
   void initialize();
-  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition. The
+  /// Replaces the state (eta per vertex, u and v per P2 node), e.g. an initial condition, and
+  /// the state one step before it that BDF2 needs (a restart; none: the flow was steady). The
   /// next linear solve factorises afresh.
-  void set_state(const FlowState& state);
+  void set_state(const FlowState& state, const FlowState* before = nullptr);
   /// The next linear solve factorises afresh instead of reusing the last LU
   /// (FlowSolverOptions::reuse_factorisation). At a checkpoint: a run restarted from it starts
   /// with a fresh LU, so the run that goes on must too for both to stay the same bit for bit.
@@ -133,13 +142,18 @@ class ShallowWaterSolver {
  private:
   struct Iteration {  // the linearised problem of one iteration
     double theta, inv_dt, t_new, t_source;
-    bool characteristics;  // advection done by characteristics (u_departure_), else Eulerian
+    bool characteristics;          // advection done by characteristics, else Eulerian
     double added_viscosity = 0.0;  // [m^2/s] on top of the case's (steady continuation)
+    // The time term (u - u_d) inv_dt starts from u_d = now u^n + before u^{n-1} (BDF2), taken
+    // at the paths' feet with characteristics; the same weights give eta_d.
+    double now = 1.0, before = 0.0;  // [-]
+    double dt_before = 0.0;          // [s] t^n - t^{n-1}
   };
+  Iteration time_step(double dt) const;
   void setup_system();
   AssemblyParameters assembly_parameters(const Iteration& it) const;
   // The nodal values of element e (all but nu_e, which assemble_system sets).
-  ElementState element_state(int e, bool characteristics) const;
+  ElementState element_state(int e, const Iteration& it) const;
   void for_each_element(const std::function<void(int)>& visit) const;
   void departure_values(const Iteration& it, double dt);
   void assemble_system(const Iteration& it);
@@ -153,6 +167,7 @@ class ShallowWaterSolver {
   void update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x);
   void restart_water_balance();  // V(0) = V now, nothing through the boundaries yet
   void check_state(const FlowState& s, double t) const;
+  double volume_of(const FlowState& s) const;  // [m^3]
   double residual_norm(const Eigen::VectorXd& x) const;
   double steady_residual(const Iteration& it);
   bool newton_to_steady(Iteration it, double dt, double dt_max, double r_ref, double tolerance,
@@ -166,9 +181,9 @@ class ShallowWaterSolver {
   LinearSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
-  std::optional<P2MassMatrix> mass_;               // with characteristics
-  std::vector<double> u_departure_, v_departure_;  // [m/s] per P2 node: u^n + dt a^n at the
-                                                   // path's foot (departure_values)
+  std::optional<P2MassMatrix> mass_;  // with characteristics
+  // [m/s] per P2 node: the time term's start u_d with characteristics (departure_values)
+  std::vector<double> u_departure_, v_departure_;
 
   std::vector<double> z_b_;        // [m] per P2 node
   std::vector<double> nu_t_;       // [m^2/s] per element
@@ -183,6 +198,8 @@ class ShallowWaterSolver {
 
   FlowState state_;          // at t^{n+1} (the current iterate during a step)
   FlowState previous_;       // at t^n
+  FlowState before_;         // at t^{n-1} (BDF2)
+  bool history_ = false;     // previous_ is a step before state_ (false: set_state)
   FlowState linearisation_;  // x^k of the current iteration
   WaterBalance balance_;
 };

@@ -31,6 +31,7 @@ double ShallowWaterSolver::residual_norm(const Eigen::VectorXd& x) const {
 // state, where the pseudo time term vanishes: the residual of the steady equations.
 double ShallowWaterSolver::steady_residual(const Iteration& it) {
   previous_ = state_;
+  history_ = false;  // pseudo time is not time
   set_boundary_velocities(it);
   linearisation_ = state_;
   assemble_system(it);

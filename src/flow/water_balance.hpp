@@ -1,6 +1,6 @@
 #pragma once
 // Water volume balance (spec 6.2): V(t) - V(0) + (volume that left through the boundaries)
-// - (volume added by sources), relative to V(0).
+// - (volume added by sources) - (volume held in BDF2's time lag), relative to V(0).
 //
 // Why it closes to round-off: the continuity rows (8)-(11) of element_assembly.hpp are solved
 // exactly by the direct solver except on the elevation-Dirichlet rows. Summing all rows, the
@@ -18,11 +18,12 @@ struct WaterBalance {
   double volume = 0.0;                // V(t) [m^3]
   double outflow = 0.0;               // volume out through all boundaries since t = 0 [m^3]
   double source = 0.0;                // volume added by source terms since t = 0 [m^3]
+  double lag = 0.0;                   // volume in BDF2's time lag [m^3] (theta-scheme: 0)
   std::vector<double> group_outflow;  // per mesh boundary group [m^3] (inflow negative)
   std::vector<double> group_rate;     // outflow rate of the last step per group [m^3/s]
 
-  /// V(t) - V(0) + outflow - source [m^3].
-  double error() const { return volume - initial_volume + outflow - source; }
+  /// V(t) - V(0) + outflow - source - lag [m^3].
+  double error() const { return volume - initial_volume + outflow - source - lag; }
   double relative_error() const { return error() / initial_volume; }
 };
 

@@ -85,5 +85,45 @@ TEST(Characteristics, CarriesAFieldOtherThanTheVelocity) {
   EXPECT_GT(checked, mesh.node_count() / 2);
 }
 
+// A velocity linear in time: uniform U_before at t^{n-1} = t^n - dt_before and U at t^n, so
+// w(t) = U + (t - t^n) (U - U_before) / dt_before, extrapolated to t^{n+1} = t^n + dt. The path
+// from x is straight, and the midpoint rule integrates a velocity linear in time exactly: the
+// foot at lag tau is x - integral over [t^{n+1} - tau, t^{n+1}] of w. The carried fields
+// q = (x^2, y) (at t^n) and (x, x y) (at t^{n-1}) must arrive at their feet to round-off
+// (tolerance 1e-9 of their range) at every node whose path stays inside.
+TEST(Characteristics, PathsOfAVelocityLinearInTimeReachBothFeet) {
+  const double L = 100.0, W = 20.0, U = 1.5, U_before = 0.5;  // [m], [m], [m/s], [m/s]
+  const double dt = 8.0, dt_before = 4.0;                     // [s]
+  const Mesh mesh = make_rectangle_mesh({.length = L, .width = W, .nx = 20, .ny = 4});
+  const int n = mesh.node_count();
+  const std::vector<double> u(n, U), u_before(n, U_before), zero(n, 0.0);
+  std::vector<double> a_x(n), a_y(n), b_x(n), b_y(n), a_x_d, a_y_d, b_x_d, b_y_d;
+  for (int i = 0; i < n; ++i) {
+    const Vec2& p = mesh.nodes[i];
+    a_x[i] = p.x() * p.x();
+    a_y[i] = p.y();
+    b_x[i] = p.x();
+    b_y[i] = p.x() * p.y();
+  }
+  const Foot feet[2] = {{dt, a_x, a_y, a_x_d, a_y_d}, {dt + dt_before, b_x, b_y, b_x_d, b_y_d}};
+  Characteristics(mesh).advect(PathVelocity{u, zero, u_before, zero, dt_before}, dt, feet);
+  // Distance travelled back from t^{n+1} to t^n - s [m]: the integral of w from t^n - s to
+  // t^n + dt, w(t^n + r) = U + r (U - U_before) / dt_before.
+  const double a = (U - U_before) / dt_before;  // [m s^-2]
+  const auto travelled = [&](double s) { return U * (dt + s) + 0.5 * a * (dt * dt - s * s); };
+  int checked = 0;
+  for (int i = 0; i < n; ++i) {
+    const Vec2& p = mesh.nodes[i];
+    const double foot_n = p.x() - travelled(0.0), foot_before = p.x() - travelled(dt_before);
+    if (foot_before < 1e-9) continue;  // its path leaves through the inflow
+    EXPECT_NEAR(a_x_d[i], foot_n * foot_n, 1e-9 * L * L) << "node " << i;
+    EXPECT_NEAR(a_y_d[i], p.y(), 1e-9 * W) << "node " << i;
+    EXPECT_NEAR(b_x_d[i], foot_before, 1e-9 * L) << "node " << i;
+    EXPECT_NEAR(b_y_d[i], foot_before * p.y(), 1e-9 * L * W) << "node " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, n / 4);
+}
+
 }  // namespace
 }  // namespace flotsam

@@ -28,7 +28,7 @@ ElementState element_state(const LocalState& x, const Mesh& mesh, int e) {
   }
   for (int j = 0; j < 3; ++j) {
     s.eta_k[j] = x(local_elevation(j));
-    s.eta_n[j] = 2.0 + 0.01 * j;
+    s.eta_n[j] = s.eta_d[j] = 2.0 + 0.01 * j;
   }
   s.nu_e = 0.05;  // [m^2/s]
   return s;
