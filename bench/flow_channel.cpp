@@ -143,7 +143,7 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
   if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME"))
-    options.time_scheme = std::string(e) == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
+    c.time.scheme = std::string(e) == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
   const char* trace = std::getenv("FLOTSAM_FLOW_TRACE");
   const double trace_interval = trace ? std::atof(trace) : 0.0;  // [s]
   set_reuse_from_environment(options);

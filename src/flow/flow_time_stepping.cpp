@@ -70,8 +70,8 @@ StepReport ShallowWaterSolver::step(double dt) {
 ShallowWaterSolver::Iteration ShallowWaterSolver::time_step(double dt) const {
   const double t_n = previous_.time, t_new = t_n + dt;
   const bool characteristics = options_.advection == Advection::characteristics;
-  if (options_.time_scheme == TimeScheme::theta) {
-    const double th = options_.theta;
+  if (case_.time.scheme == TimeScheme::theta) {
+    const double th = case_.time.theta;
     return {th, 1.0 / dt, t_new, t_n + th * dt, characteristics};
   }
   Iteration it{1.0, 1.5 / dt, t_new, t_new, characteristics};
@@ -96,7 +96,7 @@ ShallowWaterSolver::Iteration ShallowWaterSolver::time_step(double dt) const {
 // differs from the Eulerian one by O((theta - 1/2) dt) instead of O(dt / 2).
 void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
   const FlowState& n = previous_;
-  if (options_.time_scheme == TimeScheme::bdf2) {
+  if (case_.time.scheme == TimeScheme::bdf2) {
     if (it.before == 0.0) {
       characteristics_->advect(n.u, n.v, dt, n.u, n.v, u_departure_, v_departure_);
       return;

@@ -33,17 +33,8 @@ enum class Advection {
   supg,             // Eulerian, SUPG-stabilised, inside the Newton iterations
 };
 
-/// How the time derivative of (M-1) is discretised (docs/model.md "Time scheme").
-enum class TimeScheme {
-  bdf2,   // second-order backward differences, all terms at t^{n+1}; the first step after
-          // initialize() or set_state() without a history takes u^{n-1} = u^n
-  theta,  // the theta-scheme with FlowSolverOptions::theta (first order unless theta = 1/2)
-};
-
 /// Numerical choices of the engine (not physics: those are in FlowConfig).
 struct FlowSolverOptions {
-  TimeScheme time_scheme = TimeScheme::theta;
-  double theta = 0.6;  // [-] of TimeScheme::theta: 0.5 Crank-Nicolson, 1 backward Euler
   Advection advection = Advection::characteristics;
   // Newton iterations per step. With characteristics one is the semi-implicit scheme: the
   // (u, eta) system linearised about t^n (friction, depth in the flux); SUPG needs about three.

@@ -59,6 +59,13 @@ struct FlowConfig {
 
 enum class CouplingMode { frozen, one_way, two_way };
 
+/// How the time derivative of (M-1) is discretised (docs/model.md "Time scheme").
+enum class TimeScheme {
+  theta,  // the theta-scheme (first order unless theta = 1/2)
+  bdf2,   // second-order backward differences, all terms at t^{n+1}; the first step after the
+          // initial state or a state set without its history takes u^{n-1} = u^n
+};
+
 struct TimeConfig {
   double end = 3600.0;  // [s] simulated time
   double step = 0.1;    // flow step dt [s]
@@ -67,6 +74,8 @@ struct TimeConfig {
   int steady_max_iterations = 100;  // then frozen mode marches in time to the steady state
   double spin_up_step = 20.0;       // [s] flow step of that march
   double spin_up_end = 14400.0;     // [s] longest march before the run stops
+  TimeScheme scheme = TimeScheme::theta;
+  double theta = 0.6;  // [-] of TimeScheme::theta: 0.5 Crank-Nicolson, 1 backward Euler
 };
 
 // ---- bodies -------------------------------------------------------------------------------

@@ -161,6 +161,10 @@ TimeConfig read_time(const YamlMap& m) {
       m.integer("steady_max_iterations", time.steady_max_iterations, Range::between(1, 1e9)));
   time.spin_up_step = m.number("spin_up_step", time.spin_up_step, Range::positive());
   time.spin_up_end = m.number("spin_up_end", time.spin_up_end, Range::positive());
+  if (const auto scheme = m.find("scheme"))
+    time.scheme =
+        scheme->choice<TimeScheme>({{"theta", TimeScheme::theta}, {"bdf2", TimeScheme::bdf2}});
+  time.theta = m.number("theta", time.theta, Range::between(0.5, 1.0));
   return time;
 }
 

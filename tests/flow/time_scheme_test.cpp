@@ -27,17 +27,16 @@ Case channel(const TimeSeries& discharge) {
 
 TEST(Bdf2, RestartFromAStateAndTheOneBeforeGoesOnBitForBit) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 200.0, 40.0, 20, 6, true});
-  const Case c = channel(TimeSeries({{0.0, 0.0}, {40.0, 30.0}}));
-  FlowSolverOptions options;
-  options.time_scheme = TimeScheme::bdf2;
-  ShallowWaterSolver run(mesh, c, options);
+  Case c = channel(TimeSeries({{0.0, 0.0}, {40.0, 30.0}}));
+  c.time.scheme = TimeScheme::bdf2;
+  ShallowWaterSolver run(mesh, c);
   run.initialize();
   for (int n = 0; n < 3; ++n) run.step(5.0);
   const FlowState at = run.state(), before = run.previous_state();
   run.start_fresh_factorisation();  // as at a checkpoint
   for (int n = 0; n < 3; ++n) run.step(5.0);
 
-  ShallowWaterSolver restarted(mesh, c, options);
+  ShallowWaterSolver restarted(mesh, c);
   restarted.initialize();
   restarted.set_state(at, &before);
   for (int n = 0; n < 3; ++n) restarted.step(5.0);
@@ -49,16 +48,16 @@ TEST(Bdf2, RestartFromAStateAndTheOneBeforeGoesOnBitForBit) {
 
 TEST(Bdf2, FirstStepIsBackwardEulerOverTwoThirdsOfTheStep) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 200.0, 40.0, 20, 6, true});
-  const Case c = channel(TimeSeries(30.0));
+  Case bdf2 = channel(TimeSeries(30.0));
+  bdf2.time.scheme = TimeScheme::bdf2;
+  Case euler = bdf2;
+  euler.time.scheme = TimeScheme::theta;
+  euler.time.theta = 1.0;
   const double dt = 6.0;  // [s]
-  FlowSolverOptions bdf2;
-  bdf2.time_scheme = TimeScheme::bdf2;
-  bdf2.advection = Advection::supg;
-  bdf2.max_iterations = 20;
-  FlowSolverOptions euler = bdf2;
-  euler.time_scheme = TimeScheme::theta;
-  euler.theta = 1.0;
-  ShallowWaterSolver a(mesh, c, bdf2), b(mesh, c, euler);
+  FlowSolverOptions eulerian;
+  eulerian.advection = Advection::supg;
+  eulerian.max_iterations = 20;
+  ShallowWaterSolver a(mesh, bdf2, eulerian), b(mesh, euler, eulerian);
   a.initialize();
   b.initialize();
   a.step(dt);

@@ -194,6 +194,8 @@ TEST(CaseFile, DocumentationExampleParses) {
   EXPECT_EQ(c.bodies.contact.restitution_threshold, 0.01);
   EXPECT_EQ(c.bodies.contact.position_iterations, 10);
   EXPECT_EQ(c.bodies.contact.allowed_overlap, 0.005);
+  EXPECT_EQ(c.time.scheme, TimeScheme::theta);
+  EXPECT_EQ(c.time.theta, 0.6);
   EXPECT_NO_THROW(check_case_against_mesh(
       c, {"inflow", "outflow", "bank_right", "bank_left", "pier_1", "pier_2"}));
 }
@@ -395,6 +397,8 @@ TEST(CaseFileError, OutOfRangeGivesTheRange) {
             "case.yaml:11: time.end: expected a number > 0, got 0");
   EXPECT_EQ(error_of(edited("step: 0.5", "step: -0.1")),
             "case.yaml:11: time.step: expected a number > 0, got -0.1");
+  EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, theta: 0.4}")),
+            "case.yaml:11: time.theta: expected a number in [0.5, 1], got 0.4");
   EXPECT_EQ(error_of(edited("step: 0.5", "step: 20")),
             "case.yaml:11: time.step: the step 20 s is longer than time.end = 10 s");
   EXPECT_EQ(error_of(appended("bodies: {contact: {restitution: 1.5}}\n")),
@@ -419,6 +423,9 @@ TEST(CaseFileError, UnknownWordListsTheAllowedOnes) {
   EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, mode: twoway}")),
             "case.yaml:11: time.mode: unknown value 'twoway'; expected one of: frozen, one-way, "
             "two-way (did you mean 'two-way'?)");
+  EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, scheme: bdf3}")),
+            "case.yaml:11: time.scheme: unknown value 'bdf3'; expected one of: theta, bdf2 (did "
+            "you mean 'bdf2'?)");
   EXPECT_EQ(error_of(edited("bank_left: {type: wall}", "bank_left: {type: slip}")),
             "case.yaml:10: flow.boundaries.bank_left.type: unknown value 'slip'; expected one "
             "of: elevation, discharge, velocity, wall, noslip");

@@ -28,13 +28,12 @@ TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
   c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
   c.flow.boundaries = {{BoundaryCondition::Kind::discharge, "left", Q, {}},
                        {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), {}}};
-  FlowSolverOptions options;
-  options.time_scheme = GetParam();
-  ShallowWaterSolver solver(mesh, c, options);
+  c.time.scheme = GetParam();
+  ShallowWaterSolver solver(mesh, c);
   solver.initialize();
   const double dt = 10.0;  // [s] Courant sqrt(g H) dt / h = 4.4 * 10 / 10 ~ 4.4
   double inflow = 0.0;     // [m^3] integral of Q by the time scheme's rule
-  const double theta = options.time_scheme == TimeScheme::bdf2 ? 1.0 : options.theta;
+  const double theta = c.time.scheme == TimeScheme::bdf2 ? 1.0 : c.time.theta;
   for (int n = 0; n < 60; ++n) {
     const double t = solver.time();
     solver.step(dt);

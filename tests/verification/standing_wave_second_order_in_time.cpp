@@ -26,9 +26,8 @@ std::vector<double> wave_after_one_period(TimeScheme scheme, int steps) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, L, 10.0, 20, 1, true});
   Case c;
   c.flow.initial_eta_start = c.flow.initial_eta_end = H;  // walls all round: a closed basin
-  FlowSolverOptions options;
-  options.time_scheme = scheme;
-  ShallowWaterSolver solver(mesh, c, options);
+  c.time.scheme = scheme;
+  ShallowWaterSolver solver(mesh, c);
   solver.initialize();
   FlowState s = solver.state();
   for (int j = 0; j < mesh.vertex_count; ++j)

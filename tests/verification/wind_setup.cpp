@@ -23,9 +23,8 @@ TEST(WindSetup, SurfaceSlopeBalancesWindStress) {
   c.flow.friction_coefficient = 0.03;
   // Time stepping to the steady state (a closed basin's steady problem fixes its mean level only
   // through the time term): backward Euler at a Courant number of about 70 damps the seiches.
-  FlowSolverOptions options;
-  options.theta = 1.0;
-  ShallowWaterSolver solver(mesh, c, options);
+  c.time.theta = 1.0;
+  ShallowWaterSolver solver(mesh, c);
   solver.initialize();
   for (int n = 0; n < 40; ++n) solver.step(500.0);
   // Slope of the least-squares line through eta(x), against tau_w/(rho g H) at the mean depth.
