@@ -158,11 +158,12 @@ BoundaryConditions resolve_boundary_conditions(const Mesh& mesh, const FlowConfi
         break;
       }
       default:
-        // Elevation boundary only: no tangential velocity, u . t = 0 (the direction held at
-        // zero is the tangent t = k x n; the normal velocity stays free).
+        // Elevation boundary only: no tangential velocity where water enters, u . t = 0 (the
+        // direction held at zero is the tangent t = k x n; the normal velocity stays free;
+        // ShallowWaterSolver::apply_boundary_conditions frees u . t where water leaves).
         if (elevation_normal[node] != Vec2::Zero()) {
           const Vec2 n = elevation_normal[node].normalized();
-          bc.slip_nodes.push_back({node, Vec2(-n.y(), n.x())});
+          bc.slip_nodes.push_back({node, Vec2(-n.y(), n.x()), n});
         }
         break;
     }

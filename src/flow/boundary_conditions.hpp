@@ -2,9 +2,12 @@
 // Boundary conditions (spec 1.4) resolved on the mesh once at setup: which node carries which
 // constraint. Per P2 node, the strongest condition wins: noslip > velocity > discharge > wall.
 //   elevation: eta = eta_b(t) at the group's vertices (P1 Dirichlet); tangential velocity
-//              u . t = 0 at the group's P2 nodes (an inflow needs a second condition besides
-//              eta: without it the tangential velocity entering is undetermined and grows),
-//              normal velocity free. At a node shared with another group, the other wins.
+//              u . t = 0 at the group's P2 nodes where water enters (u^n . n <= 0: an inflow
+//              needs a second condition besides eta, without it the tangential velocity
+//              entering is undetermined and grows), free where it leaves (an outflow takes one
+//              condition; a second one there makes a boundary layer of the tangential velocity
+//              when eddies leave), normal velocity free. At a node shared with another group,
+//              the other wins.
 //   discharge: u = -n U_i at the group's nodes, U_i = c sqrt(H_i) so that the unit discharge is
 //              proportional to H^(3/2); c makes the discrete flux of term (10) equal Q(t).
 //   velocity:  u = u_b(t).
@@ -41,6 +44,8 @@ struct SlipNode {
   int node;
   Vec2 normal;  // unit direction in which the velocity is held at zero, u . normal = 0 [-]:
                 // the outward normal on a wall, the tangent on an elevation boundary
+  Vec2 outward = Vec2::Zero();  // elevation boundary: its outward normal; the tangent is held
+                                // only where water enters (u^n . outward <= 0). Wall: zero
 };
 
 struct OpenEdge {

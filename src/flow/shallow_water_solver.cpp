@@ -316,8 +316,12 @@ void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
     system_.set_dirichlet(slot++, u_b.x());
     system_.set_dirichlet(slot++, u_b.y());
   }
-  for (int k = 0; k < static_cast<int>(bc_.slip_nodes.size()); ++k)
-    system_.set_slip(k, bc_.slip_nodes[k].normal);
+  for (int k = 0; k < static_cast<int>(bc_.slip_nodes.size()); ++k) {
+    const SlipNode& s = bc_.slip_nodes[k];
+    const Vec2 u_n(previous_.u[s.node], previous_.v[s.node]);
+    if (u_n.dot(s.outward) > 0.0) continue;  // water leaves an elevation boundary: u . t free
+    system_.set_slip(k, s.normal);
+  }
 }
 
 Eigen::VectorXd ShallowWaterSolver::solve() {
