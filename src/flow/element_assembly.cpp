@@ -31,10 +31,12 @@ Supg supg_tau(double inv_dt, const Vec2& u, double nu, double gamma, double dgam
   return s;
 }
 
-}  // namespace
-
-void assemble_element(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
-                      LocalMatrix& K, LocalVector& F) {
+// Eulerian = false: with characteristics, whose advection and explicit slope and Coriolis are in
+// u_d; the terms of advection (2), SUPG and the explicit parts of (3) and (6) vanish and are not
+// computed (a third fewer operations).
+template <bool Eulerian>
+void assemble(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
+              LocalMatrix& K, LocalVector& F) {
   K.setZero();
   F.setZero();
   const double th = p.theta, g = p.gravity, f = p.coriolis, nu = s.nu_e;
@@ -56,13 +58,15 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       u_k += N[b] * ub_k;
       u_n += N[b] * ub_n;
       u_d += N[b] * Vec2(s.u_d[b], s.v_d[b]);
-      G_k += ub_k * dN[b].transpose();
       G_n += ub_n * dN[b].transpose();
       z_b += N[b] * s.z_b[b];
       force += N[b] * s.node_force[b];
-      // Strong viscous term div(nu (grad u + grad u^T)) = nu (Laplace u + grad div u).
-      visc_k += ev.hessian2[b].trace() * ub_k + ev.hessian2[b] * ub_k;
-      visc_n += ev.hessian2[b].trace() * ub_n + ev.hessian2[b] * ub_n;
+      if constexpr (Eulerian) {
+        G_k += ub_k * dN[b].transpose();
+        // Strong viscous term div(nu (grad u + grad u^T)) = nu (Laplace u + grad div u).
+        visc_k += ev.hessian2[b].trace() * ub_k + ev.hessian2[b] * ub_k;
+        visc_n += ev.hessian2[b].trace() * ub_n + ev.hessian2[b] * ub_n;
+      }
     }
     double eta_k = 0.0, eta_n = 0.0, eta_d = 0.0;
     Vec2 grad_eta_k = Vec2::Zero(), grad_eta_n = Vec2::Zero();
@@ -89,14 +93,10 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       force += src.momentum;
       S = src.continuity;
     }
-    // With characteristics the advection is done (u_d), and the explicit parts of (3) and (6)
-    // are in u_d too, taken at the departure point (assemble_explicit_momentum).
-    const double adv = p.characteristics ? 0.0 : 1.0;
-    const double explicit_here = p.characteristics ? 0.0 : 1.0 - th;
     const Supg supg =
-        p.supg && !p.characteristics ? supg_tau(p.inv_dt, u_k, nu, gamma, dgamma_dH, h) : Supg{};
+        Eulerian && p.supg ? supg_tau(p.inv_dt, u_k, nu, gamma, dgamma_dH, h) : Supg{};
     const double tau = supg.tau;
-    const Vec2 advection_k = adv * G_k * u_k, advection_n = adv * G_n * u_n;
+    const Vec2 advection_k = G_k * u_k, advection_n = G_n * u_n;
     const Mat2 strain_n = G_n + G_n.transpose();
     const Vec2 coriolis_k(-u_k.y(), u_k.x()), coriolis_n(-u_n.y(), u_n.x());  // k x u
     // The strong momentum residual at x^k, which SUPG weights: Newton's derivative of the test
@@ -117,38 +117,43 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       for (int c = 0; c < 2; ++c) {
         const int row = local_velocity(a, c);
         for (int b = 0; b < 6; ++b) {
-          const double transport = s_a * (N[b] * p.inv_dt + adv * th * u_k.dot(dN[b]));  // (1) (2)
+          double transport = s_a * N[b] * p.inv_dt;                        // (1)
+          if constexpr (Eulerian) transport += s_a * th * u_k.dot(dN[b]);  // (2)
           const double grad_ab = dN[a].dot(dN[b]);
-          const double lap_b = ev.hessian2[b].trace();
           for (int d = 0; d < 2; ++d) {
             const double delta = c == d ? 1.0 : 0.0;
-            double k = delta * (transport + s_a * gamma * N[b]);          // (1) (2) (5)
-            k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];                // (5)
-            k += adv * th * s_a * N[b] * G_k(c, d);                       // (2)
-            k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);       // (4)
-            k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
+            double k = delta * (transport + s_a * gamma * N[b]);     // (1) (2) (5)
+            k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];           // (5)
+            k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);  // (4)
             k += th * f * s_a * N[b] *
                  (c == 0 && d == 1   ? -1.0
                   : c == 1 && d == 0 ? 1.0
-                                     : 0.0);         // (6)
-            k += N[b] * dpsi_du[d] * residual_k[c];  // SUPG, Newton
+                                     : 0.0);  // (6)
+            if constexpr (Eulerian) {
+              const double lap_b = ev.hessian2[b].trace();
+              k += th * s_a * N[b] * G_k(c, d);                             // (2)
+              k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
+              k += N[b] * dpsi_du[d] * residual_k[c];                       // SUPG, Newton
+            }
             K(row, local_velocity(b, d)) += k * JxW;
           }
         }
         for (int j = 0; j < 3; ++j)
           K(row, local_elevation(j)) +=
               ((th * g * dM[j][c] + depth_rate[c] * M[j]) * s_a + dpsi_dH * residual_k[c] * M[j]) *
-              JxW;                                                           // (3) (5) (7), SUPG
-        double rhs = s_a * u_d[c] * p.inv_dt;                                // (1)
-        rhs += th * s_a * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
-        rhs -= explicit_here * g * s_a * grad_eta_n[c];                      // (3)
-        rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);                   // (4)
-        rhs += (1 - th) * psi * nu * visc_n[c];                              // (4)
-        rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);                      // (5)
-        rhs -= explicit_here * f * s_a * coriolis_n[c];                      // (6)
-        rhs += s_a * force[c];                                               // (7)
-        rhs += s_a * depth_rate[c] * eta_k;                                  // (5) (7)
-        rhs += (dpsi_du.dot(u_k) + dpsi_dH * eta_k) * residual_k[c];         // SUPG
+              JxW;                                          // (3) (5) (7), SUPG
+        double rhs = s_a * u_d[c] * p.inv_dt;               // (1)
+        rhs -= (1 - th) * nu * strain_n.row(c).dot(dN[a]);  // (4)
+        rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);     // (5)
+        rhs += s_a * force[c];                              // (7)
+        rhs += s_a * depth_rate[c] * eta_k;                 // (5) (7)
+        if constexpr (Eulerian) {
+          rhs += th * s_a * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
+          rhs -= (1 - th) * g * s_a * grad_eta_n[c];                           // (3)
+          rhs += (1 - th) * psi * nu * visc_n[c];                              // (4)
+          rhs -= (1 - th) * f * s_a * coriolis_n[c];                           // (6)
+          rhs += (dpsi_du.dot(u_k) + dpsi_dH * eta_k) * residual_k[c];         // SUPG
+        }
         F(row) += rhs * JxW;
       }
     }
@@ -170,6 +175,16 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
       F(row) += rhs * JxW;
     }
   }
+}
+
+}  // namespace
+
+void assemble_element(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
+                      LocalMatrix& K, LocalVector& F) {
+  if (p.characteristics)
+    assemble<false>(p, ev, s, K, F);
+  else
+    assemble<true>(p, ev, s, K, F);
 }
 
 void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues& ev,
