@@ -12,7 +12,8 @@
 // size 0: the case's), wall time, residual history and discharge. unsteady: T_END [s]
 // (default 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time,
 // time per step, Newton iterations, the discharge at the end and its mean over the last third;
-// writes the final state to state_file when given ("-": none); viscosity [m^2/s] replaces the
+// writes the final state to state_file when given ("-": none) and the time-mean over the last
+// third (eta, and |u| as u with v = 0) to state_file.mean; viscosity [m^2/s] replaces the
 // case's when given. compare: max |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B
 // and the same for |u| of two saved states of the same mesh. scaling: STEPS steps at DT (default 1
 // s) on the channel with far-field size MESH_SIZE [m] (pier size and refinement distance scaled
@@ -21,8 +22,8 @@
 // KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
 // preconditioner of BiCGSTAB, or not (all modes; unset: FlowSolverOptions' default),
 // FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme (unsteady), FLOTSAM_FLOW_TRACE=S a line
-// every S seconds of simulated time with the discharges and the fastest node (unsteady); steady
-// and scaling print the linear solver's counts.
+// every S seconds of simulated time with the discharges and the fastest node (unsteady); every
+// mode prints the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -155,6 +156,10 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   const auto& rate = solver.water_balance().group_rate;  // [m^3/s] out, last step
   const int inflow = mesh.find_group("inflow");
   double mean_in = 0.0, mean_time = 0.0;  // discharge in averaged over the last third [m^3/s]
+  // The time-mean over the last third: eta [m] per vertex and |u| [m/s] per node (in u; v = 0).
+  FlowState mean{t_end, std::vector<double>(mesh.vertex_count, 0.0),
+                 std::vector<double>(mesh.node_count(), 0.0),
+                 std::vector<double>(mesh.node_count(), 0.0)};
   for (int n = 0; n < steps; ++n) {
     iterations += solver.step(dt).iterations;
     if (trace_interval > 0.0 && std::fmod(solver.time() + 1e-9, trace_interval) < dt)
@@ -162,6 +167,9 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
     if (3 * (n + 1) > 2 * steps) {
       mean_in -= dt * rate[inflow];
       mean_time += dt;
+      for (int j = 0; j < mesh.vertex_count; ++j) mean.eta[j] += dt * solver.eta()[j];
+      for (int i = 0; i < mesh.node_count(); ++i)
+        mean.u[i] += dt * std::hypot(solver.u()[i], solver.v()[i]);
     }
   }
   const double wall = seconds_since(start);
@@ -175,7 +183,13 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
       "discharge in %.2f m^3/s, out %.2f m^3/s at the end; in %.2f m^3/s on average over "
       "the last third\n",
       -rate[inflow], rate[mesh.find_group("outflow")], mean_in / mean_time);
-  if (!state_file.empty() && state_file != "-") write_state(state_file, solver.state());
+  print_linear_solver_counts(solver);
+  if (!state_file.empty() && state_file != "-") {
+    write_state(state_file, solver.state());
+    for (double& eta : mean.eta) eta /= mean_time;
+    for (double& speed : mean.u) speed /= mean_time;
+    write_state(state_file + ".mean", mean);
+  }
   return 0;
 }
 
