@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "../support/straight_channel.hpp"
 #include "flow/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -16,12 +17,9 @@ namespace flotsam {
 namespace {
 
 Case channel(const TimeSeries& discharge) {
-  Case c;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;  // [m] over a flat bed
+  Case c = test::straight_channel_case("bdf2", discharge, 2.0);  // [m] over a flat bed
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
-  c.flow.boundaries = {{BoundaryCondition::Kind::discharge, "left", discharge, {}},
-                       {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), {}}};
   return c;
 }
 

@@ -11,6 +11,8 @@
 
 #include <cmath>
 
+#include "../support/straight_channel.hpp"
+#include "../support/time_schemes.hpp"
 #include "flow/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -22,12 +24,9 @@ class HydrographMassBalance : public testing::TestWithParam<TimeScheme> {};
 TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 500.0, 40.0, 25, 4, true});
   const TimeSeries Q({{0.0, 0.0}, {200.0, 40.0}, {400.0, 10.0}});  // [s], [m^3/s]
-  Case c;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;  // [m] over a flat bed
+  Case c = test::straight_channel_case("hydrograph", Q, 2.0);      // [m] over a flat bed
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
-  c.flow.boundaries = {{BoundaryCondition::Kind::discharge, "left", Q, {}},
-                       {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), {}}};
   c.time.scheme = GetParam();
   ShallowWaterSolver solver(mesh, c);
   solver.initialize();
@@ -47,11 +46,8 @@ TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
               balance.relative_error(), entered, inflow, balance.lag);
 }
 
-INSTANTIATE_TEST_SUITE_P(TimeSchemes, HydrographMassBalance,
-                         testing::Values(TimeScheme::bdf2, TimeScheme::theta),
-                         [](const testing::TestParamInfo<TimeScheme>& scheme) {
-                           return scheme.param == TimeScheme::bdf2 ? "bdf2" : "theta";
-                         });
+INSTANTIATE_TEST_SUITE_P(TimeSchemes, HydrographMassBalance, test::both_time_schemes,
+                         test::time_scheme_name);
 
 }  // namespace
 }  // namespace flotsam

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "../support/time_schemes.hpp"
 #include "flow/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -45,11 +46,7 @@ TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   std::printf("oblique flow: max |u - U| %.2e m/s, max |eta - H| %.2e m\n", du, deta);
 }
 
-INSTANTIATE_TEST_SUITE_P(TimeSchemes, ObliqueFlow,
-                         testing::Values(TimeScheme::theta, TimeScheme::bdf2),
-                         [](const testing::TestParamInfo<TimeScheme>& scheme) {
-                           return scheme.param == TimeScheme::bdf2 ? "bdf2" : "theta";
-                         });
+INSTANTIATE_TEST_SUITE_P(TimeSchemes, ObliqueFlow, test::both_time_schemes, test::time_scheme_name);
 
 }  // namespace
 }  // namespace flotsam
