@@ -57,8 +57,8 @@ void Characteristics::advect(const PathVelocity& w, double dt, std::span<const F
       return true;
     };
     Vec2 x = mesh_.nodes[i];
-    Vec2 w_x = Vec2(w.u[i], w.v[i]) +
-               slope(0.0) * Vec2(w.u[i] - w.u_before[i], w.v[i] - w.v_before[i]);  // [m/s]
+    Vec2 w_x(w.u[i], w.v[i]);  // [m/s]
+    if (w.dt_before > 0.0) w_x += slope(0.0) * (w_x - Vec2(w.u_before[i], w.v_before[i]));
     bool moved = false, stopped = false;
     double lag = 0.0;  // [s] traced so far
     int steps = 0, halvings = 0;

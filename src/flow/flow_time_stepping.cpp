@@ -111,7 +111,9 @@ void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
     }
     return;
   }
-  Iteration explicit_part = it;  // element_state's u_d is not used here
+  // The nodal values at t^n only: with `characteristics` element_state would also read the
+  // departure values, which this pass is computing.
+  Iteration explicit_part = it;
   explicit_part.characteristics = false;
   const AssemblyParameters p = assembly_parameters(it);
   const int count = mesh_.node_count();

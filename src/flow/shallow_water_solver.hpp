@@ -1,7 +1,8 @@
 #pragma once
 // The FEM shallow-water engine (spec 1, paper section 2): P2 velocity / P1 elevation
-// (Taylor-Hood) Galerkin finite elements with SUPG, a theta-scheme in time linearised by
-// Newton's method at each step, and one coupled sparse system in (u, v, eta) per iteration,
+// (Taylor-Hood) Galerkin finite elements, advection by characteristics (or Eulerian with SUPG),
+// a theta-scheme or BDF2 in time (the case's time.scheme) linearised by Newton's method at each
+// step, and one coupled sparse system in (u, v, eta) per iteration,
 // solved by a sparse direct LU whose symbolic analysis is reused, and whose numeric factors are
 // kept across steps as BiCGSTAB's preconditioner (linear_solver.hpp). docs/model.md "Flow
 // (spec 1)" gives the weak form (element_assembly.hpp), the choices and the departures.
