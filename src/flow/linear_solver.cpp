@@ -66,8 +66,10 @@ bool LinearSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen:
   // BiCGSTAB tests its updated residual; the true one may have drifted from it.
   const double b_norm = b.norm();
   if (krylov.info() == Eigen::Success && x.allFinite() &&
-      (b - A * x).norm() <= options_.tolerance * b_norm)
+      (b - A * x).norm() <= options_.tolerance * b_norm) {
+    if (krylov.iterations() > options_.refresh_iterations) reusable_ = false;
     return true;
+  }
   ++counts_.krylov_failures;
   return solve_direct(A, b, x);
 }

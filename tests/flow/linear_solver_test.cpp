@@ -60,6 +60,21 @@ TEST(LinearSolver, RefactorisesWhenBiCgstabMissesItsTolerance) {
   EXPECT_LE(relative_residual(A, x, b), 1e-12);
 }
 
+TEST(LinearSolver, AnLuThatNeedsManyIterationsIsRefreshedAtTheNextSolve) {
+  const int n = 400;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  LinearSolver solver({.reuse_factorisation = true, .refresh_iterations = 0});
+  Eigen::VectorXd x;
+  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
+  const SparseMatrix A = advection_diffusion(n, 0.31, 0.1);
+  ASSERT_TRUE(solver.solve(A, b, x));  // by BiCGSTAB (at least 1 iteration > 0): the LU aged
+  EXPECT_EQ(solver.counts().factorisations, 1);
+  EXPECT_GT(solver.counts().krylov_iterations, 0);
+  ASSERT_TRUE(solver.solve(A, b, x));  // factorises afresh
+  EXPECT_EQ(solver.counts().factorisations, 2);
+  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+}
+
 TEST(LinearSolver, WithoutReuseEverySolveFactorises) {
   const int n = 50;
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
