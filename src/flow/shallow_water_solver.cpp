@@ -59,7 +59,9 @@ void ShallowWaterSolver::setup_system() {
   colours_ = element_colours(mesh_);
   if (options_.advection == Advection::characteristics) {
     characteristics_.emplace(mesh_);
-    mass_.emplace(mesh_);
+    // The theta-scheme's explicit slope and Coriolis are projected on P2 (departure_values);
+    // BDF2 has no explicit part.
+    if (case_.time.scheme == TimeScheme::theta) mass_.emplace(mesh_);
   }
   nu_t_.assign(mesh_.element_count(), 0.0);
   open_flux_.assign(mesh_.group_names.size(), 0.0);

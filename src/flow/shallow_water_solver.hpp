@@ -173,7 +173,7 @@ class ShallowWaterSolver {
   LinearSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
-  std::optional<P2MassMatrix> mass_;  // with characteristics
+  std::optional<P2MassMatrix> mass_;  // with characteristics and the theta-scheme
   // [m/s] per P2 node: the time term's start u_d with characteristics (departure_values)
   std::vector<double> u_departure_, v_departure_;
 
