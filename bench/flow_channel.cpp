@@ -20,9 +20,9 @@
 // with it): time per step and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
 // FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
 // KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
-// preconditioner of BiCGSTAB, or not (all modes; unset: FlowSolverOptions' default),
-// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme (unsteady), FLOTSAM_FLOW_TRACE=S a line
-// every S seconds of simulated time with the discharges and the fastest node (unsteady); every
+// approximate inverse of an iterative refinement, or not (all modes; unset: FlowSolverOptions'
+// default), FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme (unsteady), FLOTSAM_FLOW_TRACE=S a
+// line every S seconds of simulated time with the discharges and the fastest node (unsteady); every
 // mode prints the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
@@ -90,9 +90,10 @@ void set_reuse_from_environment(FlowSolverOptions& options) {
 void print_linear_solver_counts(const ShallowWaterSolver& solver) {
   const auto& counts = solver.linear_solver_counts();
   std::printf(
-      "linear solves %ld: %ld factorisations, %ld BiCGSTAB iterations, %ld refactorisations "
-      "after BiCGSTAB missed its tolerance\n",
-      counts.solves, counts.factorisations, counts.krylov_iterations, counts.krylov_failures);
+      "linear solves %ld: %ld factorisations, %ld refinement iterations with a reused LU, %ld "
+      "refactorisations after the refinement stalled\n",
+      counts.solves, counts.factorisations, counts.refinement_iterations,
+      counts.refinement_failures);
 }
 
 int run_steady(double mesh_size, double viscosity) {

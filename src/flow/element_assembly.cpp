@@ -108,36 +108,33 @@ void assemble(const AssemblyParameters& p, const ElementValues& ev, const Elemen
                    nu * (th * visc_k + (1 - th) * visc_n) +
                    f * (th * coriolis_k + (1 - th) * coriolis_n) - force;
 
-    // Momentum rows: test function s_a = N_a + psi_a (SUPG), component c.
+    // Momentum rows: test function s_a = N_a + psi_a (SUPG), component c; the 2 x 2 block of
+    // rows (a, c) and columns (b, d) at once.
+    const Mat2 friction_dir = gamma * u_hat * u_hat.transpose();  // (5), gamma u^ u^T
+    const Mat2 rotation{{0.0, -1.0}, {1.0, 0.0}};                 // (6), k x
     for (int a = 0; a < 6; ++a) {
       const double psi = tau * u_k.dot(dN[a]);
       const double s_a = N[a] + psi;
       const Vec2 dpsi_du = tau * dN[a] + u_k.dot(dN[a]) * supg.dtau_du;
       const double dpsi_dH = u_k.dot(dN[a]) * supg.dtau_dH;
+      for (int b = 0; b < 6; ++b) {
+        const double sN = s_a * N[b];
+        double diagonal = sN * (p.inv_dt + gamma) + th * nu * dN[a].dot(dN[b]);  // (1) (5) (4)
+        Mat2 block = sN * (friction_dir + th * f * rotation) +                   // (5) (6)
+                     th * nu * dN[b] * dN[a].transpose();                        // (4)
+        if constexpr (Eulerian) {
+          const double lap_b = ev.hessian2[b].trace();
+          diagonal += s_a * th * u_k.dot(dN[b]) - th * psi * nu * lap_b;  // (2) (4)
+          block += th * sN * G_k - th * psi * nu * ev.hessian2[b] +       // (2) (4)
+                   N[b] * residual_k * dpsi_du.transpose();               // SUPG, Newton
+        }
+        block.diagonal().array() += diagonal;
+        for (int c = 0; c < 2; ++c)
+          for (int d = 0; d < 2; ++d)
+            K(local_velocity(a, c), local_velocity(b, d)) += block(c, d) * JxW;
+      }
       for (int c = 0; c < 2; ++c) {
         const int row = local_velocity(a, c);
-        for (int b = 0; b < 6; ++b) {
-          double transport = s_a * N[b] * p.inv_dt;                        // (1)
-          if constexpr (Eulerian) transport += s_a * th * u_k.dot(dN[b]);  // (2)
-          const double grad_ab = dN[a].dot(dN[b]);
-          for (int d = 0; d < 2; ++d) {
-            const double delta = c == d ? 1.0 : 0.0;
-            double k = delta * (transport + s_a * gamma * N[b]);     // (1) (2) (5)
-            k += s_a * gamma * u_hat[c] * u_hat[d] * N[b];           // (5)
-            k += th * nu * (delta * grad_ab + dN[a][d] * dN[b][c]);  // (4)
-            k += th * f * s_a * N[b] *
-                 (c == 0 && d == 1   ? -1.0
-                  : c == 1 && d == 0 ? 1.0
-                                     : 0.0);  // (6)
-            if constexpr (Eulerian) {
-              const double lap_b = ev.hessian2[b].trace();
-              k += th * s_a * N[b] * G_k(c, d);                             // (2)
-              k -= th * psi * nu * (delta * lap_b + ev.hessian2[b](c, d));  // (4)
-              k += N[b] * dpsi_du[d] * residual_k[c];                       // SUPG, Newton
-            }
-            K(row, local_velocity(b, d)) += k * JxW;
-          }
-        }
         for (int j = 0; j < 3; ++j)
           K(row, local_elevation(j)) +=
               ((th * g * dM[j][c] + depth_rate[c] * M[j]) * s_a + dpsi_dH * residual_k[c] * M[j]) *

@@ -327,7 +327,7 @@ void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
 }
 
 Eigen::VectorXd ShallowWaterSolver::solve() {
-  Eigen::VectorXd x;
+  Eigen::VectorXd x = pack(state_);  // the refinement's first guess: the last iterate
   if (solver_.solve(system_.A, system_.b, x)) return x;
   if (solver_.failure() == FactorizationFailure::singular)
     throw_run_error(

@@ -4,7 +4,7 @@
 // a theta-scheme or BDF2 in time (the case's time.scheme) linearised by Newton's method at each
 // step, and one coupled sparse system in (u, v, eta) per iteration,
 // solved by a sparse direct LU whose symbolic analysis is reused, and whose numeric factors are
-// kept across steps as BiCGSTAB's preconditioner (linear_solver.hpp). docs/model.md "Flow
+// kept across steps for an iterative refinement (linear_solver.hpp). docs/model.md "Flow
 // (spec 1)" gives the weak form (element_assembly.hpp), the choices and the departures.
 //
 // Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
@@ -43,8 +43,8 @@ struct FlowSolverOptions {
   double iteration_tolerance = 1e-6;  // [-] relative change of the state that ends them
   bool supg = true;                   // SUPG stabilisation of advection (Advection::supg)
   LinearSolverKind linear_solver = LinearSolverKind::umfpack;
-  // Keep the LU across solves as BiCGSTAB's preconditioner, refactorising when BiCGSTAB misses
-  // its tolerance in its iterations (linear_solver.hpp).
+  // Keep the LU across solves for an iterative refinement, refactorising when the refinement
+  // stalls or takes many iterations (linear_solver.hpp).
   bool reuse_factorisation = true;
   // [s] largest pseudo time step of the steady solve's Newton iterations (a small time term
   // keeps the linearised steady problem regular: closed basins, u = 0); 0: 1e5 h_min / sqrt(g H).

@@ -65,7 +65,8 @@ bool ShallowWaterSolver::newton_to_steady(Iteration it, double dt, double dt_max
     double r_new = std::numeric_limits<double>::infinity();
     for (;;) {
       // Newton's matrices change too much from one iteration to the next for a reused LU: on
-      // the paper's channel BiCGSTAB took 15 iterations per solve and the solve 50 % longer.
+      // the paper's channel a Krylov solver preconditioned by it took 15 iterations per solve
+      // and the solve 50 % longer.
       solver_.refactorise();
       unpack(solve());
       ++report.iterations;
