@@ -144,8 +144,14 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
-  if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME"))
-    c.time.scheme = std::string(e) == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
+  if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME")) {
+    const std::string scheme = e;
+    if (scheme != "bdf2" && scheme != "theta") {
+      std::fprintf(stderr, "FLOTSAM_FLOW_TIME_SCHEME=%s: expected bdf2 or theta\n", e);
+      return 2;
+    }
+    c.time.scheme = scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
+  }
   const char* trace = std::getenv("FLOTSAM_FLOW_TRACE");
   const double trace_interval = trace ? std::atof(trace) : 0.0;  // [s]
   set_reuse_from_environment(options);
