@@ -22,11 +22,10 @@ std::array<Mat2, 6> reference_hessians() {
 
 }  // namespace
 
-void compute_element_values(const Mesh& mesh, int e, ElementValues& v) {
+void compute_element_values(const Mesh& mesh, int e, ElementValues& v, bool with_hessians) {
   const auto& el = mesh.elements[e];
   const auto& rule = triangle_rule();
   const P1Gradients g1 = p1_reference_gradients();
-  const bool curved = mesh.is_curved(e);
   for (int q = 0; q < triangle_point_count; ++q) {
     const double r = rule[q].r, s = rule[q].s;
     const P2Gradients g2 = p2_reference_gradients(r, s);
@@ -48,7 +47,7 @@ void compute_element_values(const Mesh& mesh, int e, ElementValues& v) {
   v.area = mesh.area[e];
   v.size = std::sqrt(2.0 * v.area);
   static const std::array<Mat2, 6> h_ref = reference_hessians();
-  if (curved) {
+  if (!with_hessians || mesh.is_curved(e)) {
     for (auto& h : v.hessian2) h.setZero();
   } else {
     const Mat2 J_inv = mesh.jacobian(e).inverse();

@@ -24,8 +24,10 @@ struct ElementValues {
   double size = 0.0;                                  // h_e = sqrt(2 A_e) [m]
 };
 
-/// Fills `values` for element e of the mesh.
-void compute_element_values(const Mesh& mesh, int e, ElementValues& values);
+/// Fills `values` for element e of the mesh; the Hessians (SUPG's alone) are zero unless
+/// `with_hessians`.
+void compute_element_values(const Mesh& mesh, int e, ElementValues& values,
+                            bool with_hessians = true);
 
 /// One boundary edge at the edge quadrature points: the P2 edge is parametrised by xi in [0, 1]
 /// (vertex a = local k, vertex b = local k+1, mid node 3+k), so curved edges are exact.

@@ -120,7 +120,7 @@ void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
   std::vector<double> a_x(count, 0.0), a_y(count, 0.0);  // [m^3 s^-2] load, then [m s^-2]
   for_each_element([&](int e) {
     ElementValues ev;
-    compute_element_values(mesh_, e, ev);
+    compute_element_values(mesh_, e, ev, false);
     std::array<Vec2, 6> F;
     assemble_explicit_momentum(p, ev, element_state(e, explicit_part), F);
     const auto& el = mesh_.elements[e];

@@ -210,7 +210,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
   system_.set_zero();
   for_each_element([&](int e) {
     ElementValues ev;
-    compute_element_values(mesh_, e, ev);
+    compute_element_values(mesh_, e, ev, !it.characteristics);
     ElementState s = element_state(e, it);
     if (flow.turbulence != TurbulenceModel::none) {
       ElementFlowAverage avg;
