@@ -27,83 +27,84 @@ double relative_residual(const SparseMatrix& A, const Eigen::VectorXd& x,
   return (b - A * x).norm() / b.norm();
 }
 
-TEST(LinearSolver, ReusedLuSolvesASlightlyChangedMatrixToItsTolerance) {
-  const int n = 400;
+// A solver that keeps its LU, which it has factorised from a first matrix (c = 0.3), and the
+// right-hand side of every solve.
+struct KeptLu {
+  static constexpr int n = 400;
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  LinearSolver solver({.reuse_factorisation = true});
+  LinearSolver solver;
   Eigen::VectorXd x;
-  SparseMatrix A = advection_diffusion(n, 0.3, 0.1);
-  ASSERT_TRUE(solver.solve(A, b, x));
-  EXPECT_EQ(solver.counts().factorisations, 1);
 
-  A = advection_diffusion(n, 0.31, 0.1);  // same pattern, values a few per cent off
-  ASSERT_TRUE(solver.solve(A, b, x));
-  EXPECT_LE(relative_residual(A, x, b), 1e-12);
-  EXPECT_EQ(solver.counts().factorisations, 1);
-  EXPECT_GT(solver.counts().refinement_iterations, 0);
+  explicit KeptLu(LinearSolverOptions options = {}) : solver(with_reuse(options)) {
+    EXPECT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
+    EXPECT_EQ(solver.counts().factorisations, 1);
+  }
+  static LinearSolverOptions with_reuse(LinearSolverOptions options) {
+    options.reuse_factorisation = true;
+    return options;
+  }
+  const LinearSolverCounts& counts() const { return solver.counts(); }
+};
 
-  solver.refactorise();
-  ASSERT_TRUE(solver.solve(A, b, x));
-  EXPECT_EQ(solver.counts().factorisations, 2);
+// The first matrix with its values a few per cent off, same pattern.
+SparseMatrix slightly_changed() {
+  return advection_diffusion(KeptLu::n, 0.31, 0.1);
+}
+
+TEST(LinearSolver, ReusedLuSolvesASlightlyChangedMatrixToItsTolerance) {
+  KeptLu s;
+  const SparseMatrix A = slightly_changed();
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));
+  EXPECT_LE(relative_residual(A, s.x, s.b), 1e-12);
+  EXPECT_EQ(s.counts().factorisations, 1);
+  EXPECT_GT(s.counts().refinement_iterations, 0);
+
+  s.solver.refactorise();
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));
+  EXPECT_EQ(s.counts().factorisations, 2);
 }
 
 TEST(LinearSolver, RefactorisesWhenTheRefinementStalls) {
-  const int n = 400;
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  LinearSolver solver({.reuse_factorisation = true});
-  Eigen::VectorXd x;
-  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
-  const SparseMatrix A = advection_diffusion(n, -0.9, 0.001);  // far from the first
-  ASSERT_TRUE(solver.solve(A, b, x));
-  EXPECT_EQ(solver.counts().refinement_failures, 1);
-  EXPECT_EQ(solver.counts().factorisations, 2);
-  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+  KeptLu s;
+  const SparseMatrix A = advection_diffusion(KeptLu::n, -0.9, 0.001);  // far from the first
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));
+  EXPECT_EQ(s.counts().refinement_failures, 1);
+  EXPECT_EQ(s.counts().factorisations, 2);
+  EXPECT_LE(relative_residual(A, s.x, s.b), 1e-12);
 }
 
 TEST(LinearSolver, AnExactFirstGuessNeedsNoIteration) {
-  const int n = 400;
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  LinearSolver solver({.reuse_factorisation = true});
-  Eigen::VectorXd x;
-  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
-  const SparseMatrix A = advection_diffusion(n, 0.31, 0.1);
-  Eigen::VectorXd exact = Eigen::SparseLU<SparseMatrix>(A).solve(b);
-  ASSERT_LE(relative_residual(A, exact, b), 1e-13);
+  KeptLu s;
+  const SparseMatrix A = slightly_changed();
+  const Eigen::VectorXd exact = Eigen::SparseLU<SparseMatrix>(A).solve(s.b);
+  ASSERT_LE(relative_residual(A, exact, s.b), 1e-13);
   Eigen::VectorXd guess = exact;
-  ASSERT_TRUE(solver.solve(A, b, guess));
-  EXPECT_EQ(solver.counts().refinement_iterations, 0);
-  EXPECT_EQ(solver.counts().factorisations, 1);
+  ASSERT_TRUE(s.solver.solve(A, s.b, guess));
+  EXPECT_EQ(s.counts().refinement_iterations, 0);
+  EXPECT_EQ(s.counts().factorisations, 1);
   EXPECT_EQ((guess - exact).norm(), 0.0);  // returned as given
 }
 
 TEST(LinearSolver, MaxIterationsBoundTheRefinement) {
-  const int n = 400;
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  LinearSolver solver({.reuse_factorisation = true, .max_iterations = 1});
-  Eigen::VectorXd x;
-  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
-  const SparseMatrix A = advection_diffusion(n, 0.31, 0.1);  // needs more than one iteration
-  x.resize(0);
-  ASSERT_TRUE(solver.solve(A, b, x));
-  EXPECT_EQ(solver.counts().refinement_iterations, 1);
-  EXPECT_EQ(solver.counts().refinement_failures, 1);
-  EXPECT_EQ(solver.counts().factorisations, 2);
-  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+  KeptLu s({.max_iterations = 1});
+  const SparseMatrix A = slightly_changed();  // needs more than one iteration
+  s.x.resize(0);                              // no first guess: from zero
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));
+  EXPECT_EQ(s.counts().refinement_iterations, 1);
+  EXPECT_EQ(s.counts().refinement_failures, 1);
+  EXPECT_EQ(s.counts().factorisations, 2);
+  EXPECT_LE(relative_residual(A, s.x, s.b), 1e-12);
 }
 
 TEST(LinearSolver, AnLuThatNeedsManyIterationsIsRefreshedAtTheNextSolve) {
-  const int n = 400;
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  LinearSolver solver({.reuse_factorisation = true, .refresh_iterations = 0});
-  Eigen::VectorXd x;
-  ASSERT_TRUE(solver.solve(advection_diffusion(n, 0.3, 0.1), b, x));
-  const SparseMatrix A = advection_diffusion(n, 0.31, 0.1);
-  ASSERT_TRUE(solver.solve(A, b, x));  // refined (at least 1 iteration > 0): the LU aged
-  EXPECT_EQ(solver.counts().factorisations, 1);
-  EXPECT_GT(solver.counts().refinement_iterations, 0);
-  ASSERT_TRUE(solver.solve(A, b, x));  // factorises afresh
-  EXPECT_EQ(solver.counts().factorisations, 2);
-  EXPECT_LE(relative_residual(A, x, b), 1e-12);
+  KeptLu s({.refresh_iterations = 0});
+  const SparseMatrix A = slightly_changed();
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));  // refined (at least 1 iteration > 0): the LU aged
+  EXPECT_EQ(s.counts().factorisations, 1);
+  EXPECT_GT(s.counts().refinement_iterations, 0);
+  ASSERT_TRUE(s.solver.solve(A, s.b, s.x));  // factorises afresh
+  EXPECT_EQ(s.counts().factorisations, 2);
+  EXPECT_LE(relative_residual(A, s.x, s.b), 1e-12);
 }
 
 TEST(LinearSolver, WithoutReuseEverySolveFactorises) {
