@@ -32,8 +32,8 @@ struct LinearSolverOptions {
   int max_iterations = 20;       // refinement iterations (an LU solve and a product with A each)
   double max_contraction = 0.5;  // [-] |r| must shrink at least this much per iteration
   // Iterations above which the LU has aged: the next solve factorises afresh. On the paper's
-  // channel (300 s at dt = 1 s) 3 gives 2.9 iterations per step and 6 factorisations in 300
-  // steps; 2 refactorises 36 times, 4 and 6 take more solves (docs/performance.md).
+  // channel at dt = 1 s (docs/performance.md): over the first 300 s, 3 is fastest (2 refreshes
+  // 36 times, 4 and 6 take more solves); over the hour 3, 4 and 5 take 172, 168 and 184 s.
   int refresh_iterations = 3;
 };
 
