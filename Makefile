@@ -56,11 +56,18 @@ demo: build
 	$(BUILD)/flotsam run examples/bridge_piers.yaml --overwrite
 	$(BUILD)/flotsam render out/bridge_piers
 
-# Benchmarks: the Google Benchmark programs in bench/, then the two timed runs of issue 6
+# Benchmarks: the Google Benchmark programs in bench/, the flow engine's timed harness (about 4
+# minutes, most of it the hour of the paper's channel), then the two timed runs of issue 6
 # (results under build/bench_runs/, replaced each time). Figures go to docs/performance.md.
 bench: build
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
-	@for b in $(BUILD)/bench/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.5; done
+	@for b in $(BUILD)/bench/bench_*; do \
+	    if [ $$b = $(BUILD)/bench/bench_flow_channel ]; then continue; fi; \
+	    echo "== $$b"; $$b --benchmark_min_time=0.5; done
+	@echo "== flow engine (docs/performance.md): time per step, steady mode at Re = 20, 1 h at dt = 1 s"
+	$(BUILD)/bench/bench_flow_channel scaling 14.5 40 1
+	$(BUILD)/bench/bench_flow_channel steady 0 1.5
+	$(BUILD)/bench/bench_flow_channel unsteady 1 3600
 	@for c in bridge_piers bridge_flood; do echo "== flotsam run examples/$$c.yaml"; \
 	    /usr/bin/time -f "$$c: %e s wall, %U s user, %M KiB peak" \
 	    $(BUILD)/flotsam run examples/$$c.yaml -o $(BUILD)/bench_runs/$$c --overwrite -q \
