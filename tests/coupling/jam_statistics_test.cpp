@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 
@@ -344,7 +345,7 @@ TEST(JamStatisticsWriter, HeaderAndRowWithBackwater) {
   const JamGeometry g = paper_geometry();
   const auto report = make_report(3, {{0, 1}, {1, 2}}, {{0, pier_1}});
   const JamStatistics s = compute_jam_statistics(three_logs_against_pier_1(), report, g);
-  const auto path = std::filesystem::temp_directory_path() / "flotsam_jam_writer_test_jams.csv";
+  const auto path = test::scratch_path("flotsam_jam_writer_test_jams.csv");
   {
     JamStatisticsWriter writer(path.string(), g, true);
     const std::vector<double> rise = {0.0125, -0.002};  // [m]

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/scratch_path.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
@@ -54,7 +55,7 @@ std::string text_of(const fs::path& file) {
 }
 
 TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
-  const fs::path base = fs::temp_directory_path() / "flotsam_restart_test";
+  const fs::path base = test::scratch_path("flotsam_restart_test");
   fs::remove_all(base);
   const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
   auto options = [&](const std::string& dir, bool restart) {
@@ -95,7 +96,7 @@ TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
 }
 
 TEST(Restart, WithoutACheckpointIsAnErrorNamingTheFolder) {
-  const fs::path dir = fs::temp_directory_path() / "flotsam_restart_none";
+  const fs::path dir = test::scratch_path("flotsam_restart_none");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});

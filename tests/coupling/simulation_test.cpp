@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/scratch_path.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -85,7 +86,7 @@ TEST(Simulation, TwoWayRunKeepsTheWaterBalance) {
 }
 
 TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
-  const auto dir = std::filesystem::temp_directory_path() / "flotsam_simulation_test";
+  const auto dir = test::scratch_path("flotsam_simulation_test");
   std::filesystem::remove_all(dir);
   Case c = channel_case(CouplingMode::frozen);
   c.time.end = 10.0;

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "../support/scratch_path.hpp"
 #include "core/vec.hpp"
 
 namespace flotsam {
@@ -13,7 +14,7 @@ namespace {
 using ::testing::HasSubstr;
 
 std::string temp_file(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / name).string();
+  return test::scratch_path(name).string();
 }
 
 TEST(BinaryArchive, RoundTripIsBitExact) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -328,7 +329,7 @@ TEST(CaseFile, VelocityBoundaryTakesUAndV) {
 }
 
 TEST(CaseFile, RelativeMeshFileIsReadFromTheCaseFolder) {
-  const auto folder = std::filesystem::temp_directory_path() / "flotsam_case_file_test";
+  const auto folder = test::scratch_path("flotsam_case_file_test");
   std::filesystem::create_directories(folder / "meshes");
   std::ofstream(folder / "meshes" / "river.msh") << "$MeshFormat\n";
   std::ofstream(folder / "river.yaml")

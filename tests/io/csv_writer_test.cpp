@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 
 namespace flotsam {
@@ -19,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch_file(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "flotsam_csv_test";
+  const fs::path dir = test::scratch_path("flotsam_csv_test");
   fs::create_directories(dir);
   return dir / name;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 
 namespace flotsam {
@@ -21,7 +22,7 @@ class OutputDirectory : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / (std::string("flotsam_outdir_") + info->name());
+    root_ = test::scratch_path(std::string("flotsam_outdir_") + info->name());
     fs::remove_all(root_);
     fs::create_directories(root_);
   }

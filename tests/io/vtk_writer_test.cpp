@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "io/vtk_writer.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -29,8 +30,8 @@ namespace fs = std::filesystem;
 
 fs::path scratch_folder() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() /
-                       (std::string("flotsam_vtk_") + info->test_suite_name() + "_" + info->name());
+  const fs::path dir = test::scratch_path(std::string("flotsam_vtk_") + info->test_suite_name() +
+                                          "_" + info->name());
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "../mesh/holey_mesh.hpp"
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "mesh/structured_mesh.hpp"
 #include "render/body_layer.hpp"
@@ -69,7 +70,7 @@ void expect_near(const Colour& got, const Colour& want, int tolerance, const std
 
 TEST(Frame, PngHasTheRequestedSizeAndMoreThanOneColour) {
   RampScene ramp;
-  const fs::path path = fs::temp_directory_path() / "flotsam_render_frame_test.png";
+  const fs::path path = test::scratch_path("flotsam_render_frame_test.png");
   render_png(ramp.scene, path.string());
   cairo_surface_t* png = cairo_image_surface_create_from_png(path.c_str());
   ASSERT_EQ(cairo_surface_status(png), CAIRO_STATUS_SUCCESS);
