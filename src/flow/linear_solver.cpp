@@ -24,22 +24,21 @@ bool LinearSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen:
   const double target = options_.tolerance * b.norm();
   Eigen::VectorXd r = b - A * x;
   double r_norm = r.norm();
+  // The LU has aged too far for A: out of iterations, too slow, diverging or not finite.
+  const auto aged = [&] {
+    ++counts_.refinement_failures;
+    return solve_direct(A, b, x);
+  };
   int k = 0;
   while (r_norm > target) {
+    if (k == options_.max_iterations) return aged();
     const double before = r_norm;
-    if (k < options_.max_iterations) {
-      x += direct_.solve(r);
-      r = b - A * x;
-      r_norm = r.norm();
-      ++k;
-      ++counts_.refinement_iterations;
-    }
-    // Stalled (max_iterations passed: r unchanged), diverging or not finite: the LU has aged
-    // too far for this matrix.
-    if (!(r_norm <= options_.max_contraction * before)) {
-      ++counts_.refinement_failures;
-      return solve_direct(A, b, x);
-    }
+    x += direct_.solve(r);
+    r = b - A * x;
+    r_norm = r.norm();
+    ++k;
+    ++counts_.refinement_iterations;
+    if (!(r_norm <= options_.max_contraction * before)) return aged();
   }
   if (k > options_.refresh_iterations) reusable_ = false;
   return true;
