@@ -4,7 +4,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -194,9 +194,7 @@ TEST(MeshGenerator, PolygonKeepsItsSidesGroupsAndArea) {
 }
 
 TEST(MeshGenerator, FileSourceReadsTheWrittenMesh) {
-  const auto path =
-      (std::filesystem::temp_directory_path() / fmt::format("flotsam_generator_{}.msh", getpid()))
-          .string();
+  const auto path = test::scratch_path("flotsam_generator.msh").string();
   const Mesh generated = generate_mesh(small_channel(), path);
   MeshSource file;
   file.kind = MeshSource::Kind::file;

@@ -4,7 +4,6 @@
 #include <gmock/gmock.h>
 #include <gmsh.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <numbers>
 #include <string>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -28,8 +28,7 @@ class TempFolder {
  public:
   TempFolder() {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            fmt::format("flotsam_msh_reader_{}_{}", getpid(), test->name());
+    path_ = flotsam::test::scratch_path(fmt::format("flotsam_msh_reader_{}", test->name()));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
