@@ -7,23 +7,26 @@
 //   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file] [viscosity]
 //   <build>/bench/bench_flow_channel compare STATE_A STATE_B
 //   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
+//   <build>/bench/bench_flow_channel section STATE X
 //
 // steady: solve_steady from still water (at the case's viscosity, or the one given [m^2/s]; mesh
-// size 0: the case's), wall time, residual history and discharge. unsteady: T_END [s]
-// (default 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time,
-// time per step, Newton iterations, the discharge at the end and its mean over the last third;
-// writes the final state to state_file when given ("-": none) and the time-mean over the last
-// third (eta, and |u| as u with v = 0) to state_file.mean; viscosity [m^2/s] replaces the
-// case's when given. compare: max |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B
-// and the same for |u| of two saved states of the same mesh. scaling: STEPS steps at DT (default 1
-// s) on the channel with far-field size MESH_SIZE [m] (pier size and refinement distance scaled
-// with it): time per step and peak memory (getrusage ru_maxrss). OMP_NUM_THREADS sets the threads;
-// FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu
-// KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
-// approximate inverse of an iterative refinement, or not (all modes; unset: FlowSolverOptions'
-// default), FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme (unsteady), FLOTSAM_FLOW_TRACE=S a
-// line every S seconds of simulated time with the discharges and the fastest node (unsteady); every
-// mode prints the linear solver's counts.
+// size 0: the case's), wall time, residual history and discharge. unsteady: T_END [s] (default
+// 3600) of flow from still water (eta linear 10 -> 9.8 m) at step DT [s], wall time, time per step,
+// Newton iterations, the discharge at the end and its mean over the last third; writes the final
+// state to state_file when given ("-": none) and the time-mean over the last third (eta, and |u| as
+// u with v = 0) to state_file.mean; viscosity [m^2/s] replaces the case's when given. compare: max
+// |(eta - eta_out)_A - (eta - eta_out)_B| / max |eta - eta_out|_B and the same for |u| of two saved
+// states of the same mesh. scaling: STEPS steps at DT (default 1 s) on the channel with far-field
+// size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step and peak
+// memory (getrusage ru_maxrss). section: eta, u, v of a saved state (of the case's own mesh) every
+// 5 m across the channel at x = X [m]. OMP_NUM_THREADS sets the threads; FLOTSAM_FLOW_ITERATIONS=n
+// the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu KLU instead of UMFPACK
+// (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the approximate inverse of an
+// iterative refinement, or not (all modes; unset: FlowSolverOptions' default),
+// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
+// FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (steady, unsteady;
+// unset: the case's), FLOTSAM_FLOW_TRACE=S a line every S seconds of simulated time with the
+// discharges and the fastest node (unsteady); every mode prints the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -33,10 +36,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "flow/shallow_water_solver.hpp"
+#include "mesh/interpolation.hpp"
+#include "mesh/point_locator.hpp"
 #include "paper_channel.hpp"
 
 namespace flotsam {
@@ -68,9 +74,11 @@ void write_state(const std::string& path, const FlowState& s) {
 
 FlowState read_state(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read the state file " + path);
   const auto read = [&](std::vector<double>& v) {
     size_t n = 0;
     in.read(reinterpret_cast<char*>(&n), sizeof n);
+    if (!in || n > (size_t{1} << 32)) throw std::runtime_error(path + ": not a saved state");
     v.resize(n);
     in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * 8));
   };
@@ -87,6 +95,34 @@ void set_reuse_from_environment(FlowSolverOptions& options) {
     options.reuse_factorisation = std::string(e) == "1";
 }
 
+// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta and FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length
+// replace the case's; false, with a message, for any other value.
+bool set_case_from_environment(Case& c) {
+  if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME")) {
+    const std::string scheme = e;
+    if (scheme != "bdf2" && scheme != "theta") {
+      std::fprintf(stderr, "FLOTSAM_FLOW_TIME_SCHEME=%s: expected bdf2 or theta\n", e);
+      return false;
+    }
+    c.time.scheme = scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
+  }
+  if (const char* e = std::getenv("FLOTSAM_FLOW_TURBULENCE")) {
+    const std::string model = e;
+    if (model == "none") {
+      c.flow.turbulence = TurbulenceModel::none;
+    } else if (model == "smagorinsky") {
+      c.flow.turbulence = TurbulenceModel::smagorinsky;
+    } else if (model == "mixing-length") {
+      c.flow.turbulence = TurbulenceModel::mixing_length;
+    } else {
+      std::fprintf(stderr,
+                   "FLOTSAM_FLOW_TURBULENCE=%s: expected none, smagorinsky or mixing-length\n", e);
+      return false;
+    }
+  }
+  return true;
+}
+
 void print_linear_solver_counts(const ShallowWaterSolver& solver) {
   const auto& counts = solver.linear_solver_counts();
   std::printf(
@@ -99,6 +135,7 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
 int run_steady(double mesh_size, double viscosity) {
   Case c = paper_channel_case(mesh_size);
   if (viscosity > 0.0) c.flow.viscosity = viscosity;
+  if (!set_case_from_environment(c)) return 2;
   const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   set_reuse_from_environment(options);
@@ -144,14 +181,7 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   const Mesh mesh = paper_channel_mesh(c);
   FlowSolverOptions options;
   if (const char* e = std::getenv("FLOTSAM_FLOW_ITERATIONS")) options.max_iterations = std::atoi(e);
-  if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME")) {
-    const std::string scheme = e;
-    if (scheme != "bdf2" && scheme != "theta") {
-      std::fprintf(stderr, "FLOTSAM_FLOW_TIME_SCHEME=%s: expected bdf2 or theta\n", e);
-      return 2;
-    }
-    c.time.scheme = scheme == "bdf2" ? TimeScheme::bdf2 : TimeScheme::theta;
-  }
+  if (!set_case_from_environment(c)) return 2;
   const char* trace = std::getenv("FLOTSAM_FLOW_TRACE");
   const double trace_interval = trace ? std::atof(trace) : 0.0;  // [s]
   set_reuse_from_environment(options);
@@ -202,6 +232,8 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
 
 int run_compare(const std::string& a_file, const std::string& b_file) {
   const FlowState a = read_state(a_file), b = read_state(b_file);
+  if (a.eta.size() != b.eta.size() || a.u.size() != b.u.size())
+    throw std::runtime_error(a_file + " and " + b_file + " are states of different meshes");
   const double eta_out = 9.8;  // [m] the outflow level of examples/bridge_piers.yaml
   double d_eta = 0.0, m_eta = 0.0, d_u = 0.0, m_u = 0.0;
   for (size_t j = 0; j < b.eta.size(); ++j) {
@@ -217,6 +249,25 @@ int run_compare(const std::string& a_file, const std::string& b_file) {
               100 * d_eta / m_eta);
   std::printf("|u|: max difference %.3e m/s of max %.3e m/s (%.3f %%)\n", d_u, m_u,
               100 * d_u / m_u);
+  return 0;
+}
+
+// eta, u and v of a saved state at 35 points every 5 m across the channel at x [m].
+int run_section(const std::string& file, double x) {
+  const FlowState state = read_state(file);
+  const Case c = paper_channel_case(0.0);
+  const Mesh mesh = paper_channel_mesh(c);
+  if (state.u.size() != static_cast<size_t>(mesh.node_count()))
+    throw std::runtime_error(file + " is not a state of the case's own mesh");
+  const PointLocator locator(mesh);
+  for (int k = 0; k <= 34; ++k) {
+    const double y = std::clamp(5.0 * k, 1e-6, c.mesh.channel.width - 1e-6);  // [m]
+    const Location at = locator.locate(Vec2(x, y));
+    if (!at.inside) continue;
+    const Vec2 u = interpolate_p2(mesh, at, state.u, state.v);
+    std::printf("x %7.1f y %6.1f: eta %.4f m, u %.3f, v %.3f m/s\n", x, y,
+                interpolate_p1(mesh, at, state.eta), u.x(), u.y());
+  }
   return 0;
 }
 
@@ -263,6 +314,7 @@ int main(int argc, char** argv) {
       return run_unsteady(number(1, 1.0), number(2, 3600.0), number(3, 0.0),
                           args.size() > 4 ? args[4] : "", number(5, 0.0));
     if (args.size() >= 3 && args[0] == "compare") return run_compare(args[1], args[2]);
+    if (args.size() >= 3 && args[0] == "section") return run_section(args[1], number(2, 20.0));
     if (args.size() >= 3 && args[0] == "scaling")
       return run_scaling(number(1, 14.5), static_cast<int>(number(2, 10)), number(3, 1.0));
   } catch (const std::exception& e) {

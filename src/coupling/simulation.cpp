@@ -76,23 +76,25 @@ void Simulation::initialize() {
 }
 
 // Frozen mode's flow: the steady solve, or when it does not converge (a flow with no steady
-// state at its viscosity, whose continuation stops short of it), a march in time from the
-// initial state until the flow stops changing. The state found becomes the flow at t = 0, at rest
-// in time.
+// state at its viscosity, whose continuation stops short of it) or time.steady_method is march,
+// a march in time from the initial state until the flow stops changing. The state found becomes
+// the flow at t = 0, at rest in time.
 void Simulation::solve_frozen_flow() {
-  const SteadyReport steady = flow_->solve_steady();
-  if (steady.converged) {
-    spdlog::info("steady flow: residual {:.3g} after {} iterations", steady.residuals.back(),
-                 steady.iterations);
-    return;
+  if (case_.time.steady_method == SteadyMethod::solve) {
+    const SteadyReport steady = flow_->solve_steady();
+    if (steady.converged) {
+      spdlog::info("steady flow: residual {:.3g} after {} iterations", steady.residuals.back(),
+                   steady.iterations);
+      return;
+    }
+    spdlog::info(
+        "the steady solve stopped at residual {:.3g} after {} iterations (lowest viscosity with "
+        "a steady state: {:.3g} m^2/s, case: {:.3g} m^2/s); marching in time instead",
+        steady.residuals.empty() ? 0.0 : steady.residuals.back(), steady.iterations,
+        steady.viscosity, case_.flow.viscosity);
+    flow_->initialize();  // from the initial state again, not from where the solve stopped
   }
-  spdlog::info(
-      "the steady solve stopped at residual {:.3g} after {} iterations (lowest viscosity with a "
-      "steady state: {:.3g} m^2/s, case: {:.3g} m^2/s); marching in time with {} s steps to the "
-      "steady state instead",
-      steady.residuals.empty() ? 0.0 : steady.residuals.back(), steady.iterations, steady.viscosity,
-      case_.flow.viscosity, case_.time.spin_up_step);
-  flow_->initialize();  // from the initial state again, not from where the solve stopped
+  spdlog::info("marching in time with {} s steps to the steady state", case_.time.spin_up_step);
   constexpr double settled = 1e-5;  // largest change of u in one step / largest u [-]
   const double change =
       flow_->march_to_steady(case_.time.spin_up_step, settled, case_.time.spin_up_end);

@@ -59,6 +59,12 @@ struct FlowConfig {
 
 enum class CouplingMode { frozen, one_way, two_way };
 
+/// How frozen mode finds its steady flow.
+enum class SteadyMethod {
+  solve,  // Newton on the steady equations (Eulerian form), marching when it does not converge
+  march,  // marching in time with the case's time scheme until the flow stops changing
+};
+
 /// How the time derivative of (M-1) is discretised (docs/model.md "Time scheme").
 enum class TimeScheme {
   theta,  // the theta-scheme (first order unless theta = 1/2)
@@ -70,6 +76,7 @@ struct TimeConfig {
   double end = 3600.0;  // [s] simulated time
   double step = 0.1;    // flow step dt [s]
   CouplingMode mode = CouplingMode::two_way;
+  SteadyMethod steady_method = SteadyMethod::solve;  // frozen mode
   double steady_tolerance = 1e-8;   // steady/frozen mode: relative residual to stop at [-]
   int steady_max_iterations = 100;  // then frozen mode marches in time to the steady state
   double spin_up_step = 20.0;       // [s] flow step of that march

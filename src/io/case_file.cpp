@@ -156,6 +156,9 @@ TimeConfig read_time(const YamlMap& m) {
                                             {"one-way", CouplingMode::one_way},
                                             {"two-way", CouplingMode::two_way}});
   }
+  if (const auto method = m.find("steady_method"))
+    time.steady_method = method->choice<SteadyMethod>(
+        {{"solve", SteadyMethod::solve}, {"march", SteadyMethod::march}});
   time.steady_tolerance = m.number("steady_tolerance", time.steady_tolerance, Range::positive());
   time.steady_max_iterations = static_cast<int>(
       m.integer("steady_max_iterations", time.steady_max_iterations, Range::between(1, 1e9)));

@@ -238,6 +238,10 @@ TEST(CaseFile, DefaultsAreTheSpecs) {
   EXPECT_EQ(c.flow.wind, Vec2::Zero());
   EXPECT_EQ(c.flow.min_depth, 1e-3);
   EXPECT_EQ(c.time.mode, CouplingMode::two_way);
+  EXPECT_EQ(c.time.steady_method, SteadyMethod::solve);
+  EXPECT_EQ(parse_case(edited("step: 0.5}", "step: 0.5, steady_method: march}"), "case.yaml")
+                .time.steady_method,
+            SteadyMethod::march);
   EXPECT_EQ(c.bodies.physics.drag_law, DragLaw::ganser);
   EXPECT_EQ(c.bodies.physics.added_mass_coefficient, 0.5);
   EXPECT_EQ(c.bodies.physics.drag_points, 1);
@@ -427,6 +431,9 @@ TEST(CaseFileError, UnknownWordListsTheAllowedOnes) {
   EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, scheme: bdf3}")),
             "case.yaml:11: time.scheme: unknown value 'bdf3'; expected one of: theta, bdf2 (did "
             "you mean 'bdf2'?)");
+  EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, steady_method: newton}")),
+            "case.yaml:11: time.steady_method: unknown value 'newton'; expected one of: solve, "
+            "march");
   EXPECT_EQ(error_of(edited("bank_left: {type: wall}", "bank_left: {type: slip}")),
             "case.yaml:10: flow.boundaries.bank_left.type: unknown value 'slip'; expected one "
             "of: elevation, discharge, velocity, wall, noslip");
