@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "flow/element_values.hpp"
 #include "flow/shallow_water_solver.hpp"
@@ -39,15 +40,30 @@ double max_speed(const ShallowWaterSolver& solver, int* where = nullptr) {
   return m;
 }
 
+// The case (examples/bridge_piers.yaml) as `adjust` leaves it, on its own mesh, solved to steady
+// state from still water.
+struct SteadyBridge {
+  static Case adjusted(const std::function<void(Case&)>& adjust) {
+    Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
+    adjust(c);
+    return c;
+  }
+  explicit SteadyBridge(const std::function<void(Case&)>& adjust)
+      : c(adjusted(adjust)), mesh(generate_mesh(c.mesh)), solver(mesh, c) {
+    solver.initialize();
+    steady = solver.solve_steady();
+  }
+  Case c;
+  Mesh mesh;
+  ShallowWaterSolver solver;
+  SteadyReport steady;
+};
+
 TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
-  Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
   // At the case's Re = 1000 the piers shed eddies (the paper's Fig. 16): no steady state exists.
   // At Re = 20 on the pier diameter the wakes are steady: nu = U D / Re = 0.5 * 60 / 20.
-  c.flow.viscosity = 1.5;  // [m^2/s]
-  const Mesh mesh = generate_mesh(c.mesh);
-  ShallowWaterSolver solver(mesh, c);
-  solver.initialize();
-  const SteadyReport steady = solver.solve_steady();
+  SteadyBridge bridge([](Case& c) { c.flow.viscosity = 1.5; });  // [m^2/s]
+  const auto& [c, mesh, solver, steady] = bridge;
   ASSERT_TRUE(steady.converged);
   EXPECT_LE(steady.residuals.back(), 1e-8);
 
@@ -143,12 +159,8 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
 // steady state stores no water) to 1e-6 of the discharge. Not asserted: symmetry, the Eulerian
 // form's inflow reach carries grid-scale wiggles at this Reynolds number (docs/model.md).
 TEST(BridgeChannelSteady, PapersMixingLengthAtRe1000ConvergesWithoutContinuation) {
-  Case c = read_case(FLOTSAM_SOURCE_DIR "/examples/bridge_piers.yaml");
-  c.flow.turbulence = TurbulenceModel::mixing_length;
-  const Mesh mesh = generate_mesh(c.mesh);
-  ShallowWaterSolver solver(mesh, c);
-  solver.initialize();
-  const SteadyReport steady = solver.solve_steady();
+  SteadyBridge bridge([](Case& c) { c.flow.turbulence = TurbulenceModel::mixing_length; });
+  const auto& [c, mesh, solver, steady] = bridge;
   ASSERT_TRUE(steady.converged);
   EXPECT_LE(steady.residuals.back(), 1e-8);
   EXPECT_GT(steady.iterations, 10);  // the linear regime this test is about
