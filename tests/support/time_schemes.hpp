@@ -11,8 +11,13 @@ namespace flotsam::test {
 
 inline const auto both_time_schemes = testing::Values(TimeScheme::theta, TimeScheme::bdf2);
 
+/// The scheme's name, as in the test list and the case file's time.scheme.
+inline std::string scheme_name(TimeScheme scheme) {
+  return scheme == TimeScheme::bdf2 ? "bdf2" : "theta";
+}
+
 inline std::string time_scheme_name(const testing::TestParamInfo<TimeScheme>& scheme) {
-  return scheme.param == TimeScheme::bdf2 ? "bdf2" : "theta";
+  return scheme_name(scheme.param);
 }
 
 }  // namespace flotsam::test

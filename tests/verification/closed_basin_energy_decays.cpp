@@ -73,7 +73,7 @@ TEST_P(ClosedBasin, EnergyFallsAtEveryStep) {
     E = E_new;
   }
   std::printf("closed basin, %s: E(400 s) / E(0) = %.6f, largest rise in one step %.2e\n",
-              GetParam() == TimeScheme::bdf2 ? "BDF2" : "theta", E / E0, largest_rise);
+              test::scheme_name(GetParam()).c_str(), E / E0, largest_rise);
   EXPECT_LT(largest_rise, 0.0);
   EXPECT_LT(E, E0);
   EXPECT_LE(std::abs(solver.water_balance().relative_error()), 1e-9);
