@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 
 class OutputDirectory : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = test::scratch_path(std::string("flotsam_outdir_") + info->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-  }
+  void SetUp() override { root_ = test::fresh_test_folder("flotsam_outdir"); }
   void TearDown() override { fs::remove_all(root_); }
 
   static void touch(const fs::path& path) { std::ofstream(path) << "x\n"; }

@@ -29,12 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch_folder() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = test::scratch_path(std::string("flotsam_vtk_") + info->test_suite_name() +
-                                          "_" + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return test::fresh_test_folder("flotsam_vtk");
 }
 
 std::string read_text(const fs::path& path) {

@@ -26,12 +26,7 @@ using ::testing::HasSubstr;
 /// A fresh folder for this test's files, removed at the end.
 class TempFolder {
  public:
-  TempFolder() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = flotsam::test::scratch_path(fmt::format("flotsam_msh_reader_{}", test->name()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
+  TempFolder() : path_(flotsam::test::fresh_test_folder("flotsam_msh_reader")) {}
   ~TempFolder() { std::filesystem::remove_all(path_); }
   std::string file(const std::string& name) const { return (path_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {

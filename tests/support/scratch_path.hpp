@@ -3,6 +3,7 @@
 // this process (flotsam_tests_<pid>), so that two test runs side by side (the plain and the
 // sanitizer build, or two users) never write into each other's files. The folder is removed when
 // the test program ends.
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -33,6 +34,15 @@ class ScratchFolder {
 inline std::filesystem::path scratch_path(const std::string& name) {
   static const ScratchFolder folder;
   return folder.path() / name;
+}
+
+/// An empty folder for the running test's files: <prefix>_<suite>_<test> in the scratch folder.
+inline std::filesystem::path fresh_test_folder(const std::string& prefix) {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const auto path = scratch_path(prefix + "_" + info->test_suite_name() + "_" + info->name());
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
 }
 
 }  // namespace flotsam::test
