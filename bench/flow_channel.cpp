@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/interpolation.hpp"
 #include "mesh/point_locator.hpp"
 #include "paper_channel.hpp"

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <map>
 
-#include "flow/linear_system.hpp"
+#include "flow/fem/linear_system.hpp"
 #include "paper_channel.hpp"
 
 namespace flotsam {

@@ -1,9 +1,13 @@
-# flotsam_module(NAME DEPENDS targets...)
-# Builds src/NAME/*.cpp into the static library flotsam_NAME (an interface library while the
-# folder holds headers only). Sources are globbed so that adding a file needs no CMake edit.
+# flotsam_module(NAME [FOLDER path] DEPENDS targets...)
+# Builds src/NAME/*.cpp (or src/FOLDER/*.cpp) into the static library flotsam_NAME (an interface
+# library while the folder holds headers only). Sources are globbed so that adding a file needs
+# no CMake edit.
 function(flotsam_module name)
-  cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
-  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
+  cmake_parse_arguments(ARG "" "FOLDER" "DEPENDS" ${ARGN})
+  if(NOT ARG_FOLDER)
+    set(ARG_FOLDER ${name})
+  endif()
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${ARG_FOLDER}/*.cpp)
   if(sources)
     add_library(flotsam_${name} STATIC ${sources})
     target_include_directories(flotsam_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
@@ -16,7 +20,7 @@ function(flotsam_module name)
 endfunction()
 
 # flotsam_test_folder(FOLDER LIBS...)
-# Each tests/FOLDER/*.cpp is compiled into one GoogleTest executable test_FOLDER, labelled
+# Each tests/FOLDER/*.cpp is compiled into one GoogleTest executable test_FOLDER ('/' -> '_'), labelled
 # "unit" (the sanitizer build runs these), or "verification" for tests/verification. A file whose first lines hold "// ctest-label: slow"
 # goes into its own executable labelled "slow", out of the default `make test`.
 # Tests run two at a time on two cores: OpenMP threads that wait by spinning would take the
@@ -39,14 +43,15 @@ function(flotsam_test_folder folder)
     endif()
   endforeach()
   if(fast)
-    add_executable(test_${folder} ${fast})
-    target_link_libraries(test_${folder} PRIVATE flotsam_options ${ARGN} GTest::gtest_main GTest::gmock)
+    string(REPLACE "/" "_" target ${folder})
+    add_executable(test_${target} ${fast})
+    target_link_libraries(test_${target} PRIVATE flotsam_options ${ARGN} GTest::gtest_main GTest::gmock)
     if(folder STREQUAL "verification")
       set(kind "verification")
     else()
       set(kind "unit")
     endif()
-    gtest_discover_tests(test_${folder} PROPERTIES LABELS "${kind}"
+    gtest_discover_tests(test_${target} PROPERTIES LABELS "${kind}"
                          ENVIRONMENT ${test_environment} DISCOVERY_TIMEOUT 60)
   endif()
 endfunction()

@@ -3,8 +3,9 @@
 // archive of named arrays (io/binary_archive.hpp):
 //
 //   run       time, step count, next output time, RKF45 totals, the times of the outputs
-//   flow      state (time, eta, u, v), the state a step before, water balance; the same for
-//             the reference flow
+//   flow      the engine's own records (FlowEngine::save: FEM: state (time, eta, u, v) and the
+//             state a step before; finite volumes: h, hu, hv per cell and the sub-step totals)
+//             and its water balance; the same for the reference flow
 //   bodies    every per-body array (BodySet::for_each_array), outflow count, next id
 //   release   the random streams and counts of the release lines
 //   contacts  last contacts (warm start) and the sweep order
@@ -20,55 +21,6 @@ namespace flotsam {
 template <>
 struct is_plain_struct<ContactConstraint> : std::true_type {};
 
-namespace {
-
-void write_state(ArchiveWriter& w, const std::string& prefix, const FlowState& s) {
-  w.write_value(prefix + ".time", s.time);
-  w.write(prefix + ".eta", s.eta);
-  w.write(prefix + ".u", s.u);
-  w.write(prefix + ".v", s.v);
-}
-
-FlowState read_state(ArchiveReader& r, const std::string& prefix, const ShallowWaterSolver& flow) {
-  FlowState s;
-  s.time = r.read_value<double>(prefix + ".time");
-  s.eta = r.read<double>(prefix + ".eta");
-  s.u = r.read<double>(prefix + ".u");
-  s.v = r.read<double>(prefix + ".v");
-  if (s.eta.size() != flow.eta().size() || s.u.size() != flow.u().size())
-    throw_input_error(
-        "{}: the checkpoint's flow has {} vertices and {} nodes, the case's mesh "
-        "{} and {}: the case or its mesh changed since the run",
-        r.path(), s.eta.size(), s.u.size(), flow.eta().size(), flow.u().size());
-  return s;
-}
-
-// The flow's state and the one a step before it (BDF2's history), and its water balance.
-void write_flow(ArchiveWriter& w, const std::string& prefix, const ShallowWaterSolver& flow) {
-  const WaterBalance& b = flow.water_balance();
-  write_state(w, prefix, flow.state());
-  write_state(w, prefix + ".previous", flow.previous_state());
-  w.write(prefix + ".balance",
-          std::vector<double>{b.initial_volume, b.volume, b.outflow, b.source, b.lag});
-  w.write(prefix + ".group_outflow", b.group_outflow);
-  w.write(prefix + ".group_rate", b.group_rate);
-}
-
-void read_flow(ArchiveReader& r, const std::string& prefix, ShallowWaterSolver& flow) {
-  const FlowState s = read_state(r, prefix, flow),
-                  previous = read_state(r, prefix + ".previous", flow);
-  flow.set_state(s, &previous);
-  const auto sums = r.read<double>(prefix + ".balance");
-  WaterBalance b;
-  b.initial_volume = sums.at(0), b.volume = sums.at(1), b.outflow = sums.at(2);
-  b.source = sums.at(3), b.lag = sums.at(4);
-  b.group_outflow = r.read<double>(prefix + ".group_outflow");
-  b.group_rate = r.read<double>(prefix + ".group_rate");
-  flow.restore_water_balance(b);
-}
-
-}  // namespace
-
 void Simulation::write_checkpoint(const std::string& path) const {
   ArchiveWriter w(path);
   w.write_value("run.time", time_);
@@ -76,8 +28,8 @@ void Simulation::write_checkpoint(const std::string& path) const {
   w.write_value("run.next_output", next_output_);
   w.write_value("run.rkf45", integration_totals_);
   w.write("run.output_times", output_ ? output_->times() : std::vector<double>{});
-  write_flow(w, "flow", *flow_);
-  if (reference_flow_) write_flow(w, "reference_flow", *reference_flow_);
+  flow_->save(w, "flow");
+  if (reference_flow_) reference_flow_->save(w, "reference_flow");
   if (has_bodies_) {
     BodySet& bodies = const_cast<BodySet&>(bodies_);  // for_each_array only reads here
     w.write_value("bodies.count", bodies.size());
@@ -100,8 +52,8 @@ void Simulation::read_checkpoint(const std::string& path) {
   next_output_ = r.read_value<double>("run.next_output");
   integration_totals_ = r.read_value<IntegrationStats>("run.rkf45");
   const auto output_times = r.read<double>("run.output_times");
-  read_flow(r, "flow", *flow_);
-  if (reference_flow_) read_flow(r, "reference_flow", *reference_flow_);
+  flow_->restore(r, "flow");
+  if (reference_flow_) reference_flow_->restore(r, "reference_flow");
   if (has_bodies_) {
     const int count = r.read_value<int>("bodies.count");
     bodies_.outflow_count = r.read_value<long>("bodies.outflow_count");

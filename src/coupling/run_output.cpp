@@ -46,37 +46,17 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
                                          balance_columns(), true);
 }
 
-void RunOutput::write(double t, const ShallowWaterSolver& flow, const BodySet& bodies,
-                      bool with_bodies, const std::vector<std::uint8_t>& jammed) {
-  write_flow(t, flow);
+void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
+                      const std::vector<std::uint8_t>& jammed) {
+  const std::string file = fmt::format("flow_{:06d}.vtu", count());
+  flow.write_fields((directory_ / file).string(), t);
+  flow_index_.add(t, file);
   if (with_bodies) write_bodies(bodies, t);
   write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), t,
                      flow.eta(), flow.u(), flow.v(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
   balance_->row({t, b.volume, b.outflow, b.error(), b.relative_error()});
   times_.push_back(t);
-}
-
-void RunOutput::write_flow(double t, const ShallowWaterSolver& flow) {
-  const Mesh& mesh = flow.mesh();
-  const std::vector<double> H = flow.depth(), vorticity = flow.vorticity();
-  std::vector<Vec2> u(mesh.node_count());
-  std::vector<double> speed(mesh.node_count());
-  for (int n = 0; n < mesh.node_count(); ++n) {
-    u[n] = Vec2(flow.u()[n], flow.v()[n]);
-    speed[n] = u[n].norm();
-  }
-  VtuFields fields;
-  fields.add_p1_scalar("eta [m]", flow.eta());
-  fields.add_point_scalar("H [m]", H);
-  fields.add_point_scalar("z_b [m]", flow.bed());
-  fields.add_point_vector("u [m/s]", u);
-  fields.add_point_scalar("|u| [m/s]", speed);
-  fields.add_point_scalar("vorticity [1/s]", vorticity);
-  fields.add_cell_scalar("nu_t [m^2/s]", flow.eddy_viscosity());
-  const std::string file = fmt::format("flow_{:06d}.vtu", count());
-  write_vtu((directory_ / file).string(), mesh, fields, t);
-  flow_index_.add(t, file);
 }
 
 void RunOutput::write_bodies(const BodySet& bodies, double t) {

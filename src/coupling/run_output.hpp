@@ -14,7 +14,7 @@
 
 #include "bodies/body_set.hpp"
 #include "coupling/jam_statistics.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/flow_engine.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
 
@@ -36,7 +36,7 @@ class RunOutput {
   /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
   /// stays at its steady state's).
   /// `jammed`: one flag per body (bodies in a jam, spec 6.3), or empty.
-  void write(double t, const ShallowWaterSolver& flow, const BodySet& bodies, bool with_bodies,
+  void write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
              const std::vector<std::uint8_t>& jammed);
 
   /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
@@ -48,7 +48,6 @@ class RunOutput {
   const std::vector<double>& times() const { return times_; }  // [s] of each output so far
 
  private:
-  void write_flow(double t, const ShallowWaterSolver& flow);
   void write_bodies(const BodySet& bodies, double t);
 
   std::filesystem::path directory_;

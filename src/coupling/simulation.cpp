@@ -8,6 +8,7 @@
 
 #include "bodies/outflow.hpp"
 #include "core/error.hpp"
+#include "coupling/flow_engines.hpp"
 #include "coupling/progress.hpp"
 #include "io/case_file.hpp"
 
@@ -20,15 +21,15 @@ Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
 
 void Simulation::initialize() {
   check_case_against_mesh(case_, mesh_.group_names);
-  flow_ = std::make_unique<ShallowWaterSolver>(mesh_, case_);
+  flow_ = make_flow_engine(mesh_, case_);
   flow_->initialize();
-  flow_field_ = std::make_unique<FemFlowField>(*flow_);
-  if (case_.time.mode == CouplingMode::frozen) solve_frozen_flow();
+  if (case_.time.mode == CouplingMode::frozen) flow_->settle(case_.time);
   time_ = flow_->time();
 
   for (const auto& bc : case_.flow.boundaries) {
     const bool open = bc.kind == BoundaryCondition::Kind::elevation ||
-                      bc.kind == BoundaryCondition::Kind::discharge;
+                      bc.kind == BoundaryCondition::Kind::discharge ||
+                      bc.kind == BoundaryCondition::Kind::free;
     const int g = mesh_.find_group(bc.group);
     if (open && g >= 0 &&
         std::find(outflow_groups_.begin(), outflow_groups_.end(), g) == outflow_groups_.end())
@@ -38,7 +39,7 @@ void Simulation::initialize() {
     bodies_.water_density = case_.flow.water_density;
     const PlacementCheck check{case_.file, case_.flow.dry_depth};
     if (!options_.restart)  // a restart takes its bodies from the checkpoint
-      add_explicit_bodies(bodies_, case_.bodies.bodies, *flow_field_, time_, check);
+      add_explicit_bodies(bodies_, case_.bodies.bodies, flow_->field(), time_, check);
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
     integrator_ =
         std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
@@ -49,7 +50,7 @@ void Simulation::initialize() {
     jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids);
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
         !jam_geometry_.bridges.empty()) {
-      reference_flow_ = std::make_unique<ShallowWaterSolver>(mesh_, case_);
+      reference_flow_ = make_flow_engine(mesh_, case_);
       reference_flow_->initialize();
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }
@@ -64,6 +65,7 @@ void Simulation::initialize() {
           output_directory().string());
     read_checkpoint(checkpoint.string());
     if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
+    open_probes(true);
     return;
   }
   if (options_.write_output) {
@@ -72,47 +74,16 @@ void Simulation::initialize() {
     output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_group,
                                           options_.overwrite || case_.output.overwrite, case_.file);
   }
+  open_probes(false);
+  if (probes_) probes_->write(time_);
   write_output_if_due(false);
 }
 
-// Frozen mode's flow: the steady solve, or when it does not converge (a flow with no steady
-// state at its viscosity, whose continuation stops short of it) or time.steady_method is march,
-// a march in time from the initial state until the flow stops changing. The state found becomes
-// the flow at t = 0, at rest in time.
-void Simulation::solve_frozen_flow() {
-  if (case_.time.steady_method == SteadyMethod::solve) {
-    const SteadyReport steady = flow_->solve_steady();
-    if (steady.converged) {
-      spdlog::info("steady flow: residual {:.3g} after {} iterations", steady.residuals.back(),
-                   steady.iterations);
-      return;
-    }
-    spdlog::info(
-        "the steady solve stopped at residual {:.3g} after {} iterations (lowest viscosity with "
-        "a steady state: {:.3g} m^2/s, case: {:.3g} m^2/s); marching in time instead",
-        steady.residuals.empty() ? 0.0 : steady.residuals.back(), steady.iterations,
-        steady.viscosity, case_.flow.viscosity);
-    flow_->initialize();  // from the initial state again, not from where the solve stopped
-  }
-  spdlog::info("marching in time with {} s steps to the steady state", case_.time.spin_up_step);
-  constexpr double settled = 1e-5;  // largest change of u in one step / largest u [-]
-  const double change =
-      flow_->march_to_steady(case_.time.spin_up_step, settled, case_.time.spin_up_end);
-  if (change > settled)
-    throw_run_error(
-        "frozen mode: the flow still changes by {:.3g} of its largest velocity per step after "
-        "{} s of marching (time.spin_up_end); raise it or check the case",
-        change, flow_->time());
-  spdlog::info("steady flow by marching: change {:.3g} per step at t = {} s", change,
-               flow_->time());
-  FlowState steady_state = flow_->state();
-  steady_state.time = 0.0;
-  flow_->set_state(steady_state);  // previous = current: du/dt = 0
-  WaterBalance balance;            // the frozen run's balance starts here
-  balance.initial_volume = balance.volume = flow_->volume();
-  balance.group_outflow.assign(mesh_.group_names.size(), 0.0);
-  balance.group_rate.assign(mesh_.group_names.size(), 0.0);
-  flow_->restore_water_balance(balance);
+void Simulation::open_probes(bool append) {
+  if (!options_.write_output || case_.output.probes.empty()) return;
+  probes_ =
+      std::make_unique<ProbeWriter>((output_directory() / (case_.name + "_probes.csv")).string(),
+                                    case_.output.probes, flow_->field(), case_.file, append);
 }
 
 std::filesystem::path Simulation::output_directory() const {
@@ -142,14 +113,19 @@ void Simulation::step() {
 void Simulation::advance_flow(double t1) {
   auto timed = timer_.time(Stage::flow);
   if (case_.time.mode == CouplingMode::frozen) return;  // the steady flow stays
-  flow_->step(t1 - flow_->time());
+  const double t0 = flow_->time();
+  flow_->step(t1 - t0);
   if (reference_flow_) reference_flow_->step(t1 - reference_flow_->time());
+  // Gauges: every step, or at the first step past each multiple of output.probe_interval.
+  const double every = case_.output.probe_interval, eps = 1e-9 * case_.time.step;
+  if (probes_ && (every <= 0.0 || std::floor((t1 + eps) / every) > std::floor((t0 + eps) / every)))
+    probes_->write(t1);
 }
 
 void Simulation::advance_bodies(double t0, double t1) {
   {
     auto timed = timer_.time(Stage::bodies);
-    releaser_->release(bodies_, *flow_field_, t0, t1);
+    releaser_->release(bodies_, flow_->field(), t0, t1);
   }
   // RKF45 sub-steps of every body; contacts resolved at the end of each contact interval.
   // The contact solve moves bodies over the interval just integrated (ContactWorld::step).
@@ -161,7 +137,7 @@ void Simulation::advance_bodies(double t0, double t1) {
   IntegrationStats stats;
   {
     auto timed = timer_.time(Stage::bodies);
-    stats = integrator_->advance(bodies_, *flow_field_, t0, t1, resolve_contacts);
+    stats = integrator_->advance(bodies_, flow_->field(), t0, t1, resolve_contacts);
   }
   integration_totals_.accepted += stats.accepted;
   integration_totals_.rejected += stats.rejected;
@@ -169,7 +145,7 @@ void Simulation::advance_bodies(double t0, double t1) {
       std::max(integration_totals_.contact_intervals, stats.contact_intervals);
 
   auto timed = timer_.time(Stage::bodies);
-  const OutflowResult out = remove_outflowing_bodies(bodies_, *flow_field_, t1, outflow_groups_);
+  const OutflowResult out = remove_outflowing_bodies(bodies_, flow_->field(), t1, outflow_groups_);
   if (!out.stray.empty()) {
     const int i = out.stray.front();
     throw_run_error(
@@ -190,7 +166,7 @@ void Simulation::apply_reaction() {
     if (bodies_.state[i] != BodyState::gone)
       reactions.push_back({bodies_.position[i], bodies_.half_extents(i), bodies_.angle[i],
                            -bodies_.reaction_force[i]});
-  flow_field_->set_body_reactions(reactions);
+  flow_->field().set_body_reactions(reactions);
 }
 
 void Simulation::check_diagnostics() {
@@ -217,8 +193,8 @@ void Simulation::write_output_if_due(bool force) {
   output_->write(time_, *flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
   write_checkpoint((output_->directory() / "checkpoint.bin").string());
-  flow_->start_fresh_factorisation();  // as a run restarted from this checkpoint does
-  if (reference_flow_) reference_flow_->start_fresh_factorisation();
+  flow_->after_checkpoint();  // as a run restarted from this checkpoint does
+  if (reference_flow_) reference_flow_->after_checkpoint();
 }
 
 void Simulation::run() {
@@ -272,6 +248,7 @@ std::string Simulation::summary() const {
                      integration_totals_.rejected);
     s += format_jam_summary(jam_statistics(), jam_geometry_, backwater_rise());
   }
+  s += flow_->summary();
   s += "wall time       ";
   for (int k = 0; k < static_cast<int>(Stage::count); ++k)
     s += fmt::format(" {} {:.2f} s", stage_names[k], timer_.seconds(static_cast<Stage>(k)));

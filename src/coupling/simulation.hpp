@@ -23,8 +23,8 @@
 #include "coupling/jam_statistics.hpp"
 #include "coupling/run_output.hpp"
 #include "coupling/stage_timer.hpp"
-#include "flow/fem_flow_field.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/flow_engine.hpp"
+#include "flow/probes.hpp"
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
 
@@ -56,7 +56,7 @@ class Simulation {
 
   double time() const { return time_; }
   long step_count() const { return step_count_; }
-  const ShallowWaterSolver& flow() const { return *flow_; }
+  const FlowEngine& flow() const { return *flow_; }
   const BodySet& bodies() const { return bodies_; }
   const StageTimer& timer() const { return timer_; }
   const Case& run_case() const { return case_; }
@@ -66,17 +66,17 @@ class Simulation {
   /// Water-surface rise upstream of each bridge against the reference flow without bodies
   /// (output.backwater in two-way runs); empty without a reference flow.
   std::vector<double> backwater_rise() const;
-  const ShallowWaterSolver* reference_flow() const { return reference_flow_.get(); }
+  const FlowEngine* reference_flow() const { return reference_flow_.get(); }
   /// The contact stage (bodies only): its last contacts and profile (largest overlap left).
   const ContactWorld& contacts() const { return *contacts_; }
 
  private:
-  void solve_frozen_flow();
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void apply_reaction();
   void check_diagnostics();
   void write_output_if_due(bool force);
+  void open_probes(bool append);
   std::filesystem::path output_directory() const;
   // checkpoint.cpp: everything a run needs to continue bit for bit from an output time.
   void write_checkpoint(const std::string& path) const;
@@ -87,9 +87,8 @@ class Simulation {
   RunOptions options_;
   bool has_bodies_ = false;
 
-  std::unique_ptr<ShallowWaterSolver> flow_;
-  std::unique_ptr<ShallowWaterSolver> reference_flow_;  // the same flow without bodies
-  std::unique_ptr<FemFlowField> flow_field_;
+  std::unique_ptr<FlowEngine> flow_;
+  std::unique_ptr<FlowEngine> reference_flow_;  // the same flow without bodies
   BodySet bodies_;
   std::unique_ptr<BodyIntegrator> integrator_;
   std::unique_ptr<Releaser> releaser_;
@@ -99,6 +98,7 @@ class Simulation {
   JamGeometry jam_geometry_;
   std::unique_ptr<BackwaterProbe> backwater_probe_;
   std::unique_ptr<RunOutput> output_;
+  std::unique_ptr<ProbeWriter> probes_;  // output.probes, when the case has any
 
   double time_ = 0.0;  // [s]
   long step_count_ = 0;

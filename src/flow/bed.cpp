@@ -10,6 +10,8 @@ double bed_elevation(const BedConfig& bed, const Vec2& p) {
       return bed.level - bed.slope.dot(p);
     case BedConfig::Kind::table:
       return bed.profile_x(p.x());
+    case BedConfig::Kind::expression:
+      return bed.expression(p.x(), p.y());  // an InputError where the formula is not finite
   }
   return bed.level;
 }

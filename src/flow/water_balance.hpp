@@ -27,4 +27,11 @@ struct WaterBalance {
   double relative_error() const { return error() / initial_volume; }
 };
 
+class ArchiveWriter;
+class ArchiveReader;
+
+/// The balance's sums as records `prefix`.balance, .group_outflow, .group_rate of a checkpoint.
+void write_water_balance(ArchiveWriter& w, const std::string& prefix, const WaterBalance& b);
+WaterBalance read_water_balance(ArchiveReader& r, const std::string& prefix);
+
 }  // namespace flotsam

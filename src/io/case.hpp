@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bodies/body_set.hpp"
+#include "core/expression.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
 #include "mesh/geometry.hpp"
@@ -16,26 +17,41 @@ namespace flotsam {
 // ---- bed ----------------------------------------------------------------------------------
 
 struct BedConfig {
-  enum class Kind { flat, slope, table } kind = Kind::flat;
+  enum class Kind { flat, slope, table, expression } kind = Kind::flat;
   double level = 0.0;         // z_b at the origin [m]
   Vec2 slope = Vec2::Zero();  // (-dz_b/dx, -dz_b/dy) [-]: positive = bed falls along +x / +y
   TimeSeries profile_x;       // kind == table: z_b as a function of x [m] (piecewise linear)
+  Expression expression;      // kind == expression: z_b(x, y) [m]
 };
 
 // ---- flow ---------------------------------------------------------------------------------
+
+/// Which engine advances the flow (docs/model.md): the paper's P2-P1 finite elements, or the
+/// finite-volume engine for floods with wet/dry fronts and shocks (spec 7).
+enum class FlowEngineKind { fem, fv };
 
 enum class FrictionLaw { none, manning, chezy, strickler };
 enum class TurbulenceModel { none, smagorinsky, mixing_length };
 
 struct BoundaryCondition {
-  enum class Kind { elevation, discharge, velocity, wall, noslip } kind = Kind::wall;
+  // free: transmissive, what reaches the boundary leaves (finite-volume engine only)
+  enum class Kind { elevation, discharge, velocity, wall, noslip, free } kind = Kind::wall;
   std::string group;   // mesh physical group
   TimeSeries value;    // eta_b [m] or Q [m^3/s]
   TimeSeries value_y;  // velocity: u_b = (value, value_y) [m/s]
   int line = 0;        // line of the group's key in the case file, for messages (0: built in code)
 };
 
+/// Numerical choices of the finite-volume engine (src/flow/fv, docs/model.md).
+struct FiniteVolumeConfig {
+  int order = 2;                 // 1: piecewise constant; 2: MUSCL reconstruction with a limiter
+  double courant = 0.45;         // [-] of the explicit step, dt = courant * min(r_in / (|u| + c))
+  double velocity_depth = 1e-3;  // H_eps [m]: below it velocities are desingularised (model.md)
+};
+
 struct FlowConfig {
+  FlowEngineKind engine = FlowEngineKind::fem;
+  FiniteVolumeConfig fv;
   double gravity = 9.81;          // g [m s^-2]
   double water_density = 1000.0;  // rho [kg m^-3]
   double viscosity = 1e-6;        // nu [m^2/s] (M-3)
@@ -53,6 +69,14 @@ struct FlowConfig {
   // Initial state: still water with eta linear in x between the two values (spec 8.2), or flat.
   double initial_eta_start = 0.0;  // eta at x = x_min [m]
   double initial_eta_end = 0.0;    // eta at x = x_max [m]
+  // Or formulas in x, y (flow.initial.eta / u / v); empty: the above, at rest. Where eta is
+  // below the bed the cell (or node) starts dry.
+  // The case file's eta goes to initial_eta only when it is a formula (a number sets
+  // initial_eta_start = initial_eta_end, and initial_eta stays empty); its u and v, numbers or
+  // formulas, are kept as formulas (a number is a formula of its text), empty when not given.
+  Expression initial_eta;  // [m]
+  Expression initial_u;    // [m/s]
+  Expression initial_v;    // [m/s]
 };
 
 // ---- time ---------------------------------------------------------------------------------
@@ -135,13 +159,22 @@ struct BodiesConfig {
 
 // ---- output -------------------------------------------------------------------------------
 
+/// A gauge (output.probes): eta, H, u, v sampled at a point at every coupling step.
+struct Probe {
+  std::string name;
+  Vec2 position = Vec2::Zero();  // [m]
+  int line = 0;                  // line in the case file, for messages (0: built in code)
+};
+
 struct OutputConfig {
   std::string directory = "out";  // relative to the working directory
   double interval = 60.0;         // [s] between field outputs
   bool overwrite = false;         // replace an existing output folder (else: error)
-  bool backwater = false;  // run a reference flow without bodies alongside (two-way), for the
-                           // water-surface rise upstream of each bridge (spec 6.3); doubles the
-                           // flow's cost
+  bool backwater = false;     // run a reference flow without bodies alongside (two-way), for the
+                              // water-surface rise upstream of each bridge (spec 6.3); doubles the
+                              // flow's cost
+  std::vector<Probe> probes;  // gauges, written to <name>_probes.csv
+  double probe_interval = 0.0;  // [s] between probe rows; 0: every coupling step
 };
 
 struct Case {

@@ -123,15 +123,26 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder)
 
 // ---- bed ----------------------------------------------------------------------------------
 
+// One kind: a table in x, a formula in x and y, or a level with an optional slope.
 BedConfig read_bed(const YamlMap& m) {
   BedConfig bed;
-  if (const auto profile = m.find("profile_x")) {
-    m.forbid("level", "the bed is given by profile_x");
-    m.forbid("slope", "the bed is given by profile_x");
+  const std::string kind = m.only_one_of({"profile_x", "expression"});
+  if (!kind.empty()) {
+    const std::string why = fmt::format("the bed is given by {}", kind);
+    m.forbid("level", why);
+    m.forbid("slope", why);
+  }
+  if (kind == "profile_x") {
+    const YamlValue profile = m.get("profile_x");
     bed.kind = BedConfig::Kind::table;
-    bed.profile_x = profile->series("x");
+    bed.profile_x = profile.series("x");
     if (bed.profile_x.is_constant())
-      profile->fail("expected a table [[x, z_b], ...]; for a flat bed give 'level'");
+      profile.fail("expected a table [[x, z_b], ...]; for a flat bed give 'level'");
+    return bed;
+  }
+  if (kind == "expression") {
+    bed.kind = BedConfig::Kind::expression;
+    bed.expression = m.get("expression").expression();
     return bed;
   }
   bed.level = m.number("level", bed.level);
@@ -171,6 +182,36 @@ TimeConfig read_time(const YamlMap& m) {
   return time;
 }
 
+// Gauges: a list of {name, x, y}; each name is unique, it heads the probe file's columns.
+std::vector<Probe> read_probes(const YamlMap& output) {
+  std::vector<Probe> probes;
+  const auto list = output.find("probes");
+  if (!list) return probes;
+  for (const YamlValue& item : list->list()) {
+    const YamlMap m = item.map();
+    Probe probe;
+    const YamlValue name = m.get("name", "the probe's name, which heads its columns");
+    probe.name = name.text();
+    const bool ok =
+        !probe.name.empty() && std::all_of(probe.name.begin(), probe.name.end(), [](char ch) {
+          return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
+        });
+    if (!ok)
+      name.fail(
+          fmt::format("expected a name of letters, digits, '_' and '-' (it names the "
+                      "probe's columns), got '{}'",
+                      probe.name));
+    for (const Probe& other : probes)
+      if (other.name == probe.name)
+        name.fail(fmt::format("the name '{}' is already used by the probe on line {}", probe.name,
+                              other.line));
+    probe.position = {m.get("x", "[m]").number(), m.get("y", "[m]").number()};
+    probe.line = item.line();
+    probes.push_back(probe);
+  }
+  return probes;
+}
+
 OutputConfig read_output(const YamlMap& m) {
   OutputConfig output;
   if (const auto directory = m.find("directory")) {
@@ -180,6 +221,8 @@ OutputConfig read_output(const YamlMap& m) {
   output.interval = m.number("interval", output.interval, Range::positive());
   output.overwrite = m.boolean("overwrite", output.overwrite);
   output.backwater = m.boolean("backwater", output.backwater);
+  output.probes = read_probes(m);
+  output.probe_interval = m.number("probe_interval", output.probe_interval, Range::non_negative());
   return output;
 }
 

@@ -1,6 +1,8 @@
 // The case file's `flow` section (docs/case-format.md, spec 1).
 #include <fmt/format.h>
 
+#include <string_view>
+
 #include "io/case_sections.hpp"
 
 namespace flotsam {
@@ -48,13 +50,38 @@ void read_turbulence(const YamlMap& m, FlowConfig& flow) {
   }
 }
 
-// Still water with eta linear in x between two values (spec 8.2), or flat.
+// The finite-volume engine's numerical choices (src/flow/fv).
+FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
+  FiniteVolumeConfig fv;
+  fv.order = static_cast<int>(m.integer("order", fv.order, Range::between(1, 2)));
+  fv.courant = m.number("courant", fv.courant, {0.0, 1.0, true, false});
+  fv.velocity_depth = m.number("velocity_depth", fv.velocity_depth, Range::positive());
+  return fv;
+}
+
+// A velocity component of the initial state: a number or a formula, both kept as a formula;
+// absent: empty (at rest).
+Expression read_initial_velocity(const YamlMap& m, std::string_view key) {
+  const auto value = m.find(key);
+  return value ? value->expression() : Expression();
+}
+
+// Still water with eta linear in x between two values (spec 8.2), or flat, or a formula in x, y;
+// u and v are zero unless given.
 void read_initial(const YamlMap& m, FlowConfig& flow) {
   const std::string given = m.only_one_of({"eta", "eta_start"});
   if (given.empty()) m.fail("expected 'eta' [m], or 'eta_start' and 'eta_end' [m]");
+  flow.initial_u = read_initial_velocity(m, "u");
+  flow.initial_v = read_initial_velocity(m, "v");
   if (given == "eta") {
-    m.forbid("eta_end", "with 'eta' the surface is flat; use eta_start and eta_end for a slope");
-    flow.initial_eta_start = flow.initial_eta_end = m.get("eta").number();
+    const YamlValue eta = m.get("eta");
+    if (eta.is_number()) {
+      m.forbid("eta_end", "with 'eta' the surface is flat; use eta_start and eta_end for a slope");
+      flow.initial_eta_start = flow.initial_eta_end = eta.number();
+    } else {
+      m.forbid("eta_end", "with 'eta' as a formula the surface is the formula's");
+      flow.initial_eta = eta.expression();
+    }
     return;
   }
   flow.initial_eta_start = m.get("eta_start").number();
@@ -71,7 +98,8 @@ BoundaryCondition read_boundary(const std::string& group, const YamlValue& value
                                         {"discharge", Kind::discharge},
                                         {"velocity", Kind::velocity},
                                         {"wall", Kind::wall},
-                                        {"noslip", Kind::noslip}});
+                                        {"noslip", Kind::noslip},
+                                        {"free", Kind::free}});
   switch (bc.kind) {
     case Kind::elevation:
     case Kind::discharge: {
@@ -92,6 +120,10 @@ BoundaryCondition read_boundary(const std::string& group, const YamlValue& value
     case Kind::noslip:
       for (const char* key : {"value", "u", "v"}) m.forbid(key, "a wall takes no value");
       break;
+    case Kind::free:
+      for (const char* key : {"value", "u", "v"})
+        m.forbid(key, "a free boundary takes no value: what reaches it leaves");
+      break;
   }
   return bc;
 }
@@ -100,6 +132,13 @@ BoundaryCondition read_boundary(const std::string& group, const YamlValue& value
 
 FlowConfig read_flow(const YamlMap& m) {
   FlowConfig flow;
+  if (const auto engine = m.find("engine"))
+    flow.engine =
+        engine->choice<FlowEngineKind>({{"fem", FlowEngineKind::fem}, {"fv", FlowEngineKind::fv}});
+  if (flow.engine == FlowEngineKind::fv)
+    flow.fv = read_finite_volume(m.map("fv"));
+  else
+    m.forbid("fv", "flow.fv only applies to 'engine: fv' (the engine is fem)");
   flow.gravity = m.number("gravity", flow.gravity, Range::positive());
   flow.water_density = m.number("density", flow.water_density, Range::positive());
   flow.viscosity = read_viscosity(m, flow.viscosity);

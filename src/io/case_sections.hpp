@@ -6,7 +6,8 @@
 
 namespace flotsam {
 
-/// flow: water, viscosity (M-3), friction and other sources (M-2), initial state, boundaries.
+/// flow: engine (and the finite-volume options), water, viscosity (M-3), friction and other sources
+/// (M-2), initial state (numbers or formulas), boundaries.
 FlowConfig read_flow(const YamlMap& flow);
 
 /// bodies: physics (spec 3), contact (spec 4.3), the explicit list (spec 2), releases (spec 5).

@@ -12,7 +12,8 @@ namespace flotsam {
 
 namespace {
 
-constexpr std::uint8_t vtk_quadratic_triangle = 22;  // VTK cell type
+constexpr std::uint8_t vtk_quadratic_triangle = 22;  // VTK cell types
+constexpr std::uint8_t vtk_triangle = 5;
 
 void check_size(const VtuFields::Field& field, std::size_t size, std::size_t expected,
                 const char* what) {
@@ -39,6 +40,10 @@ void VtuFields::add_cell_scalar(std::string name, std::span<const double> values
   fields_.push_back({std::move(name), Kind::cell_scalar, values, {}});
 }
 
+void VtuFields::add_cell_vector(std::string name, std::span<const Vec2> values) {
+  fields_.push_back({std::move(name), Kind::cell_vector, {}, values});
+}
+
 std::vector<double> p1_to_p2(const Mesh& mesh, std::span<const double> vertex_values) {
   if (vertex_values.size() != static_cast<std::size_t>(mesh.vertex_count))
     throw std::invalid_argument(fmt::format("p1_to_p2: {} values for {} vertices",
@@ -52,9 +57,12 @@ std::vector<double> p1_to_p2(const Mesh& mesh, std::span<const double> vertex_va
   return values;
 }
 
-void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields, double time) {
+void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields, double time,
+               VtuCells cells) {
   const std::size_t nodes = mesh.nodes.size();
-  const std::size_t elements = mesh.elements.size();
+  const bool split = cells == VtuCells::split;
+  const std::size_t elements = mesh.elements.size() * (split ? 4 : 1);
+  const char* per_cell = split ? "one per sub-triangle" : "one per element";
   AppendedData data;
   std::string point_data, cell_data;
   for (const VtuFields::Field& field : fields.fields()) {
@@ -73,20 +81,31 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
         point_data += data.add_float64(field.name, 1, p1_to_p2(mesh, field.scalars)) + "\n";
         break;
       case VtuFields::Kind::cell_scalar:
-        check_size(field, field.scalars.size(), elements, "one per element");
+        check_size(field, field.scalars.size(), elements, per_cell);
         cell_data += data.add_float64(field.name, 1, field.scalars) + "\n";
+        break;
+      case VtuFields::Kind::cell_vector:
+        check_size(field, field.vectors.size(), elements, per_cell);
+        cell_data += data.add_vec2_as_3d(field.name, field.vectors) + "\n";
         break;
     }
   }
 
   std::vector<std::int64_t> connectivity, offsets;
-  connectivity.reserve(6 * elements);
+  connectivity.reserve((split ? 3 : 6) * elements);
   offsets.reserve(elements);
   for (const auto& element : mesh.elements) {
-    connectivity.insert(connectivity.end(), element.begin(), element.end());
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    if (split) {
+      for (const auto& corners : Mesh::sub_triangles) {
+        for (int k : corners) connectivity.push_back(element[k]);
+        offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+      }
+    } else {
+      connectivity.insert(connectivity.end(), element.begin(), element.end());
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    }
   }
-  const std::vector<std::uint8_t> types(elements, vtk_quadratic_triangle);
+  const std::vector<std::uint8_t> types(elements, split ? vtk_triangle : vtk_quadratic_triangle);
 
   std::string body = "<UnstructuredGrid>\n" + data.field_data_time(time);
   body += fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", nodes, elements);

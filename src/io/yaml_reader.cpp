@@ -106,6 +106,11 @@ std::string YamlValue::kind_found() const {
   return fmt::format("'{}'", node_.Scalar());
 }
 
+bool YamlValue::is_number() const {
+  double x = 0.0;
+  return node_.IsScalar() && node_.Tag() != "!" && YAML::convert<double>::decode(node_, x);
+}
+
 double YamlValue::number(Range range) const {
   // A quoted scalar ("10") is text, not a number: its tag is "!" where a plain one has "?".
   double x = 0.0;
@@ -143,6 +148,12 @@ Vec2 YamlValue::vec2() const {
     fail(fmt::format("expected a pair of numbers [x, y], got {}", kind_found()));
   const auto items = list();
   return {items[0].number(), items[1].number()};
+}
+
+Expression YamlValue::expression() const {
+  if (!node_.IsScalar())
+    fail(fmt::format("expected a formula in x and y (or a number), got {}", kind_found()));
+  return Expression(node_.Scalar(), fmt::format("{}:{}: {}", document_->file_name(), line_, path_));
 }
 
 TimeSeries YamlValue::series(std::string_view abscissa, Range range) const {

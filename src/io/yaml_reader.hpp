@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/expression.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
 
@@ -65,11 +66,15 @@ class YamlValue {
   bool is_list() const { return node_.IsSequence(); }
   bool is_map() const { return node_.IsMap(); }
 
+  /// A plain number (a quoted "10" is text, not a number).
+  bool is_number() const;
   double number(Range range = Range::any()) const;
   long integer(Range range = Range::any()) const;
   bool boolean() const;
   std::string text() const;
   Vec2 vec2() const;  // [x, y]
+  /// A formula in x and y (core/expression.hpp) whose errors name "file:line: path".
+  Expression expression() const;
   /// A constant or a table [[x, value], ...] with strictly increasing x (named `abscissa` in
   /// messages) -> TimeSeries.
   TimeSeries series(std::string_view abscissa, Range range = Range::any()) const;

@@ -45,6 +45,10 @@ struct Mesh {
   int node_count() const { return static_cast<int>(nodes.size()); }
   int element_count() const { return static_cast<int>(elements.size()); }
 
+  /// The four straight sub-triangles of an element (the paper's Fig. 3), counter-clockwise, as
+  /// local node indices: three at the corners, then the middle one.
+  static constexpr int sub_triangles[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+
   /// A neighbour entry < 0 encodes boundary edge index b as -(b + 1).
   static bool is_boundary(int neighbour) { return neighbour < 0; }
   static int boundary_edge_of(int neighbour) { return -neighbour - 1; }

@@ -24,8 +24,7 @@
 namespace flotsam {
 namespace {
 
-// Sub-triangles of a curved six-node element (P-33), by local node: corners, then the middle one.
-constexpr int sub_triangles[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+// Sub-triangles of a curved six-node element (P-33): Mesh::sub_triangles.
 
 // True when p lies in the straight triangle a b c (counter-clockwise): coordinates >= -eps.
 bool in_triangle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& p, double eps) {
@@ -162,7 +161,7 @@ bool PointLocator::edge_coordinates(int e, const Vec2& p, double c[3]) const {
     const Vec2 &a = x[el[k]], &m = x[el[3 + k]], &b = x[el[(k + 1) % 3]];
     c[k] = 2.0 * inverse * std::min(cross(a - p, m - p), cross(m - p, b - p));
   }
-  for (const auto& t : sub_triangles)
+  for (const auto& t : Mesh::sub_triangles)
     if (in_triangle(x[el[t[0]]], x[el[t[1]]], x[el[t[2]]], p, eps)) return true;
   return false;
 }

@@ -16,8 +16,6 @@ std::uint32_t pack(const Colour& c) {
 /// Reference coordinates (r, s) of the six nodes, and the four sub-triangles by local node.
 const std::array<Vec2, 6> node_rs = {Vec2(0, 0),   Vec2(1, 0),     Vec2(0, 1),
                                      Vec2(0.5, 0), Vec2(0.5, 0.5), Vec2(0, 0.5)};
-constexpr std::array<std::array<int, 3>, 4> sub_triangles = {
-    {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
 
 struct ElementPaint {
   const Scene& scene;
@@ -38,8 +36,7 @@ struct ElementPaint {
 
   // Pixels whose centre q lies in triangle (a, b, c) [px]: barycentric weights
   // w_a = cross(c - b, q - b) / cross(b - a, c - a), and so on, all >= -eps.
-  void fill(const std::array<int, 6>& el, const std::array<Vec2, 6>& px,
-            const std::array<int, 3>& t) {
+  void fill(const std::array<int, 6>& el, const std::array<Vec2, 6>& px, const int (&t)[3]) {
     const Vec2 &a = px[t[0]], &b = px[t[1]], &c = px[t[2]];
     const double area2 = cross(b - a, c - a);
     if (std::abs(area2) < 1e-12) return;
@@ -91,7 +88,7 @@ void draw_field(const Scene& scene, const FrameLayout& layout, double min, doubl
       y_hi = std::max(y_hi, p.y());
     }
     if (x_hi < box.x0 || x_lo > box.x1 || y_hi < box.y0 || y_lo > box.y1) continue;
-    for (const auto& t : sub_triangles) paint.fill(el, px, t);
+    for (const auto& t : Mesh::sub_triangles) paint.fill(el, px, t);
   }
 }
 

@@ -197,6 +197,11 @@ TEST(CaseFile, DocumentationExampleParses) {
   EXPECT_EQ(c.bodies.contact.allowed_overlap, 0.005);
   EXPECT_EQ(c.time.scheme, TimeScheme::theta);
   EXPECT_EQ(c.time.theta, 0.6);
+  EXPECT_EQ(c.flow.engine, FlowEngineKind::fem);
+  ASSERT_EQ(c.output.probes.size(), 2u);
+  EXPECT_EQ(c.output.probes[1].name, "bridge");
+  EXPECT_EQ(c.output.probes[1].position, Vec2(400.0, 50.0));
+  EXPECT_EQ(c.output.probe_interval, 5.0);
   EXPECT_NO_THROW(check_case_against_mesh(
       c, {"inflow", "outflow", "bank_right", "bank_left", "pier_1", "pier_2"}));
 }
@@ -344,13 +349,217 @@ TEST(CaseFile, RelativeMeshFileIsReadFromTheCaseFolder) {
   std::filesystem::remove_all(folder);
 }
 
+// ---- the keys of the finite-volume engine, formulas and probes -------------------------------
+
+TEST(CaseFile, EngineIsFemByDefault) {
+  const Case c = parse_case(base_case, "case.yaml");
+  EXPECT_EQ(c.flow.engine, FlowEngineKind::fem);
+  EXPECT_EQ(c.flow.fv.order, 2);
+  EXPECT_EQ(c.flow.fv.courant, 0.45);
+  EXPECT_EQ(c.flow.fv.velocity_depth, 1e-3);
+  EXPECT_TRUE(c.flow.initial_eta.empty());
+  EXPECT_TRUE(c.flow.initial_u.empty());
+  EXPECT_TRUE(c.flow.initial_v.empty());
+  EXPECT_TRUE(c.output.probes.empty());
+  EXPECT_EQ(c.output.probe_interval, 0.0);
+}
+
+TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
+  const Case c =
+      parse_case(edited("  initial:",
+                        "  engine: fv\n  fv: {order: 1, courant: 0.9, velocity_depth: 0.002}\n"
+                        "  initial:"),
+                 "case.yaml");
+  EXPECT_EQ(c.flow.engine, FlowEngineKind::fv);
+  EXPECT_EQ(c.flow.fv.order, 1);
+  EXPECT_EQ(c.flow.fv.courant, 0.9);
+  EXPECT_EQ(c.flow.fv.velocity_depth, 0.002);
+  const Case d = parse_case(edited("  initial:", "  engine: fv\n  initial:"), "case.yaml");
+  EXPECT_EQ(d.flow.engine, FlowEngineKind::fv);
+  EXPECT_EQ(d.flow.fv.order, 2);  // the defaults
+  EXPECT_EQ(d.flow.fv.courant, 0.45);
+  EXPECT_EQ(
+      parse_case(edited("  initial:", "  engine: fv\n  fv: {courant: 1}\n  initial:"), "case.yaml")
+          .flow.fv.courant,
+      1.0);
+}
+
+TEST(CaseFile, BedExpressionIsAFormulaInXAndY) {
+  const Case c =
+      parse_case(appended("bed:\n  expression: \"-0.1*(1 - ((x-2)^2 + (y-2)^2))\"\n"), "case.yaml");
+  EXPECT_EQ(c.bed.kind, BedConfig::Kind::expression);
+  EXPECT_EQ(c.bed.expression.text(), "-0.1*(1 - ((x-2)^2 + (y-2)^2))");
+  EXPECT_EQ(c.bed.expression.origin(), "case.yaml:13: bed.expression");
+  EXPECT_DOUBLE_EQ(c.bed.expression(2.0, 2.0), -0.1);
+  EXPECT_DOUBLE_EQ(c.bed.expression(0.0, 0.0), 0.7);
+}
+
+TEST(CaseFile, InitialStateMayBeFormulas) {
+  const Case c = parse_case(edited("  initial: {eta: 1.0}",
+                                   "  initial: {eta: \"x < 5 ? 0.005 : 0\", u: 0.5, v: \"0.1*y\"}"),
+                            "case.yaml");
+  EXPECT_EQ(c.flow.initial_eta.text(), "x < 5 ? 0.005 : 0");
+  EXPECT_EQ(c.flow.initial_eta.origin(), "case.yaml:5: flow.initial.eta");
+  EXPECT_EQ(c.flow.initial_eta(4.0, 1.0), 0.005);
+  EXPECT_EQ(c.flow.initial_eta(6.0, 1.0), 0.0);
+  EXPECT_EQ(c.flow.initial_eta_start, 0.0);  // unused with a formula
+  EXPECT_EQ(c.flow.initial_eta_end, 0.0);
+  EXPECT_EQ(c.flow.initial_u(3.0, 7.0), 0.5);  // a number is kept as a constant formula
+  EXPECT_DOUBLE_EQ(c.flow.initial_v(3.0, 7.0), 0.7);
+  // A number for eta is the flat surface, as before; u and v go with the slope too.
+  const Case d = parse_case(
+      edited("  initial: {eta: 1.0}", "  initial: {eta_start: 1.2, eta_end: 1.0, u: \"0.2\"}"),
+      "case.yaml");
+  EXPECT_TRUE(d.flow.initial_eta.empty());
+  EXPECT_EQ(d.flow.initial_eta_start, 1.2);
+  EXPECT_EQ(d.flow.initial_u(0.0, 0.0), 0.2);
+  EXPECT_TRUE(d.flow.initial_v.empty());
+}
+
+TEST(CaseFile, FreeBoundaryTakesNoValue) {
+  const Case c = parse_case(
+      edited("outflow: {type: elevation, value: 0.9}", "outflow: {type: free}"), "case.yaml");
+  EXPECT_EQ(c.flow.boundaries[1].kind, BoundaryCondition::Kind::free);
+  EXPECT_EQ(c.flow.boundaries[1].group, "outflow");
+  EXPECT_EQ(c.flow.boundaries[1].line, 8);
+}
+
+TEST(CaseFile, ProbesAreNamedPoints) {
+  const Case c = parse_case(appended(R"(output:
+  probe_interval: 0.5
+  probes:
+    - {name: P1, x: 9.5, y: 0.5}
+    - {name: gauge_2-b, x: 50, y: -1}
+)"),
+                            "case.yaml");
+  EXPECT_EQ(c.output.probe_interval, 0.5);
+  ASSERT_EQ(c.output.probes.size(), 2u);
+  EXPECT_EQ(c.output.probes[0].name, "P1");
+  EXPECT_EQ(c.output.probes[0].position, Vec2(9.5, 0.5));
+  EXPECT_EQ(c.output.probes[0].line, 15);
+  EXPECT_EQ(c.output.probes[1].name, "gauge_2-b");
+  EXPECT_EQ(c.output.probes[1].position, Vec2(50.0, -1.0));
+  EXPECT_EQ(c.output.probes[1].line, 16);
+}
+
+TEST(CaseFileError, EngineKeysAreChecked) {
+  EXPECT_EQ(error_of(edited("  initial:", "  engine: vf\n  initial:")),
+            "case.yaml:5: flow.engine: unknown value 'vf'; expected one of: fem, fv (did you "
+            "mean 'fv'?)");
+  EXPECT_EQ(error_of(edited("  initial:", "  fv: {order: 1}\n  initial:")),
+            "case.yaml:5: flow.fv: not allowed here: flow.fv only applies to 'engine: fv' (the "
+            "engine is fem)");
+  EXPECT_EQ(error_of(edited("  initial:", "  engine: fem\n  fv: {order: 1}\n  initial:")),
+            "case.yaml:6: flow.fv: not allowed here: flow.fv only applies to 'engine: fv' (the "
+            "engine is fem)");
+  const auto fv = [](const std::string& options) {
+    return edited("  initial:", "  engine: fv\n  fv: {" + options + "}\n  initial:");
+  };
+  EXPECT_EQ(error_of(fv("order: 3")),
+            "case.yaml:6: flow.fv.order: expected an integer in [1, 2], got 3");
+  EXPECT_EQ(error_of(fv("order: 1.5")),
+            "case.yaml:6: flow.fv.order: expected an integer in [1, 2], got '1.5'");
+  EXPECT_EQ(error_of(fv("courant: 0")),
+            "case.yaml:6: flow.fv.courant: expected a number in (0, 1], got 0");
+  EXPECT_EQ(error_of(fv("courant: 1.2")),
+            "case.yaml:6: flow.fv.courant: expected a number in (0, 1], got 1.2");
+  EXPECT_EQ(error_of(fv("velocity_depth: 0")),
+            "case.yaml:6: flow.fv.velocity_depth: expected a number > 0, got 0");
+  EXPECT_EQ(error_of(fv("limiter: minmod")),
+            "case.yaml:6: flow.fv.limiter: unknown key; allowed here: order, courant, "
+            "velocity_depth");
+}
+
+TEST(CaseFileError, BedExpressionIsCheckedWhenRead) {
+  EXPECT_EQ(error_of(appended("bed: {expression: \"x + * 2\"}\n")),
+            "case.yaml:12: bed.expression: syntax error in 'x + * 2' at character 5 ('* 2'): "
+            "Unexpected operator \"*\"");
+  EXPECT_EQ(error_of(appended("bed: {expression: \"0.1*z\"}\n")),
+            "case.yaml:12: bed.expression: unknown variable 'z' in '0.1*z'; a formula may use "
+            "only x and y [m]");
+  EXPECT_EQ(error_of(appended("bed: {expression: [1, 2]}\n")),
+            "case.yaml:12: bed.expression: expected a formula in x and y (or a number), got a "
+            "list");
+  EXPECT_EQ(error_of(appended("bed: {level: 1, expression: \"0.1*x\"}\n")),
+            "case.yaml:12: bed.level: not allowed here: the bed is given by expression");
+  EXPECT_EQ(error_of(appended("bed: {expression: \"0.1*x\", slope: 0.01}\n")),
+            "case.yaml:12: bed.slope: not allowed here: the bed is given by expression");
+  EXPECT_EQ(error_of(appended("bed:\n  profile_x: [[0, 1], [10, 0]]\n  expression: \"x\"\n")),
+            "case.yaml:14: bed.expression: give either 'profile_x' (line 13) or 'expression', "
+            "not both");
+}
+
+TEST(CaseFileError, InitialFormulasAreCheckedWhenRead) {
+  const auto initial = [](const std::string& keys) {
+    return edited("  initial: {eta: 1.0}", "  initial: {" + keys + "}");
+  };
+  EXPECT_EQ(error_of(initial("eta: \"1 + (x\"")),
+            "case.yaml:5: flow.initial.eta: syntax error at the end of '1 + (x': Missing "
+            "parenthesis");
+  EXPECT_EQ(error_of(initial("eta: \"x < 5 ? 1 : 0\", eta_end: 1")),
+            "case.yaml:5: flow.initial.eta_end: not allowed here: with 'eta' as a formula the "
+            "surface is the formula's");
+  EXPECT_EQ(error_of(initial("eta: 1.0, eta_end: 1")),
+            "case.yaml:5: flow.initial.eta_end: not allowed here: with 'eta' the surface is flat; "
+            "use eta_start and eta_end for a slope");
+  EXPECT_EQ(error_of(initial("eta: 1.0, u: \"t\"")),
+            "case.yaml:5: flow.initial.u: unknown variable 't' in 't'; a formula may use only x "
+            "and y [m]");
+  EXPECT_EQ(error_of(initial("eta: 1.0, v: [0, 1]")),
+            "case.yaml:5: flow.initial.v: expected a formula in x and y (or a number), got a "
+            "list");
+  EXPECT_EQ(error_of(initial("eta: 1.0, w: 0")),
+            "case.yaml:5: flow.initial.w: unknown key; allowed here: eta, eta_start, u, v, "
+            "eta_end");
+}
+
+TEST(CaseFileError, FreeBoundaryRejectsValues) {
+  EXPECT_EQ(error_of(edited("outflow: {type: elevation, value: 0.9}",
+                            "outflow: {type: free, value: 0.9}")),
+            "case.yaml:8: flow.boundaries.outflow.value: not allowed here: a free boundary takes "
+            "no value: what reaches it leaves");
+  EXPECT_EQ(
+      error_of(edited("outflow: {type: elevation, value: 0.9}", "outflow: {type: free, u: 1}")),
+      "case.yaml:8: flow.boundaries.outflow.u: not allowed here: a free boundary takes no "
+      "value: what reaches it leaves");
+}
+
+TEST(CaseFileError, ProbesAreChecked) {
+  const auto probes = [](const std::string& list) {
+    return appended("output:\n  probes:\n" + list);
+  };
+  EXPECT_EQ(error_of(probes("    - {x: 1, y: 2}\n")),
+            "case.yaml:14: output.probes[0].name: missing; this key is required: the probe's "
+            "name, which heads its columns");
+  EXPECT_EQ(error_of(probes("    - {name: P1, y: 2}\n")),
+            "case.yaml:14: output.probes[0].x: missing; this key is required: [m]");
+  EXPECT_EQ(error_of(probes("    - {name: P1, x: 1, y: north}\n")),
+            "case.yaml:14: output.probes[0].y: expected a number, got 'north'");
+  EXPECT_EQ(error_of(probes("    - {name: \"gauge 1\", x: 1, y: 2}\n")),
+            "case.yaml:14: output.probes[0].name: expected a name of letters, digits, '_' and '-' "
+            "(it names the probe's columns), got 'gauge 1'");
+  EXPECT_EQ(error_of(probes("    - {name: \"\", x: 1, y: 2}\n")),
+            "case.yaml:14: output.probes[0].name: expected a name of letters, digits, '_' and '-' "
+            "(it names the probe's columns), got ''");
+  EXPECT_EQ(error_of(probes("    - {name: P1, x: 1, y: 2}\n    - {name: P1, x: 3, y: 2}\n")),
+            "case.yaml:15: output.probes[1].name: the name 'P1' is already used by the probe on "
+            "line 14");
+  EXPECT_EQ(error_of(probes("    - {name: P1, x: 1, y: 2, z: 0}\n")),
+            "case.yaml:14: output.probes[0].z: unknown key; allowed here: name, x, y");
+  EXPECT_EQ(error_of(appended("output: {probes: {name: P1, x: 1, y: 2}}\n")),
+            "case.yaml:12: output.probes: expected a list, got a map");
+  EXPECT_EQ(error_of(appended("output: {probe_interval: -1}\n")),
+            "case.yaml:12: output.probe_interval: expected a number >= 0, got -1");
+}
+
 // ---- errors: each names file, line, key path, and what was expected ------------------------
 
 TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
-  EXPECT_EQ(error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
-            "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
-            "gravity, density, viscosity, reynolds, friction, turbulence, coriolis, wind, "
-            "min_depth, dry_depth, initial, boundaries");
+  EXPECT_EQ(
+      error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
+      "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
+      "engine, fv, gravity, density, viscosity, reynolds, friction, turbulence, coriolis, wind, "
+      "min_depth, dry_depth, initial, boundaries");
   EXPECT_EQ(error_of(appended("nmae: river\n")),
             "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
             "bed, flow, time, bodies, output");
@@ -436,7 +645,7 @@ TEST(CaseFileError, UnknownWordListsTheAllowedOnes) {
             "march");
   EXPECT_EQ(error_of(edited("bank_left: {type: wall}", "bank_left: {type: slip}")),
             "case.yaml:10: flow.boundaries.bank_left.type: unknown value 'slip'; expected one "
-            "of: elevation, discharge, velocity, wall, noslip");
+            "of: elevation, discharge, velocity, wall, noslip, free");
 }
 
 TEST(CaseFileError, NameMustSuitAFolder) {

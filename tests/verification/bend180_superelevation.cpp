@@ -18,7 +18,7 @@
 #include <cmath>
 #include <string>
 
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "io/case_file.hpp"
 #include "mesh/interpolation.hpp"
 #include "mesh/mesh_generator.hpp"

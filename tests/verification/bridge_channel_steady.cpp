@@ -18,8 +18,8 @@
 #include <cmath>
 #include <functional>
 
-#include "flow/element_values.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/element_values.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "io/case_file.hpp"
 #include "mesh/interpolation.hpp"
 #include "mesh/mesh_generator.hpp"

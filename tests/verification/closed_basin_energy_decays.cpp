@@ -14,8 +14,8 @@
 #include <cstdio>
 
 #include "../support/time_schemes.hpp"
-#include "flow/element_values.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/element_values.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

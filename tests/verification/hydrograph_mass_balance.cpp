@@ -13,7 +13,7 @@
 
 #include "../support/straight_channel.hpp"
 #include "../support/time_schemes.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

@@ -11,9 +11,9 @@
 #include <cmath>
 
 #include "core/constants.hpp"
-#include "flow/element_values.hpp"
+#include "flow/fem/element_values.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "flow/friction.hpp"
-#include "flow/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "../support/time_schemes.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

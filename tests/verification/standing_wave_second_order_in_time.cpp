@@ -14,7 +14,7 @@
 #include <cstdio>
 
 #include "core/constants.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

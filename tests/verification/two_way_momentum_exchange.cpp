@@ -9,6 +9,7 @@
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
+#include "flow/fem/fem_engine.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
@@ -40,7 +41,7 @@ TEST(TwoWayMomentumExchange, ReactionOnTheWaterIsMinusTheForceOnTheBodies) {
   int steps = 0, loaded_steps = 0;  // steps, and those in which the bodies felt a force
   while (!s.done()) {
     s.step();
-    const ShallowWaterSolver& flow = s.flow();
+    const ShallowWaterSolver& flow = dynamic_cast<const FemEngine&>(s.flow()).solver();
     const auto& F_e = flow.element_forces();
     ASSERT_EQ(static_cast<int>(F_e.size()), mesh.element_count());
     Vec2 on_water = Vec2::Zero(), on_bodies = Vec2::Zero();

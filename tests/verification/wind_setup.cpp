@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
-#include "flow/shallow_water_solver.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {

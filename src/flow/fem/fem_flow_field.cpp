@@ -1,0 +1,113 @@
+#include "flow/fem/fem_flow_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/shape_functions.hpp"
+
+namespace flotsam {
+
+FemFlowField::FemFlowField(ShallowWaterSolver& solver) : solver_(solver), locator_(solver.mesh()) {}
+
+FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
+  const Location where = locator_.locate(p, hint);
+  FlowSample out;
+  if (where.element >= 0) hint = where.element;
+  if (!where.inside) {
+    out.inside = false;
+    out.boundary_group = where.boundary_group;
+    return out;
+  }
+  const Mesh& mesh = solver_.mesh();
+  const auto& el = mesh.elements[where.element];
+  const P2Values N = p2_values(where.r, where.s);
+  const P2Gradients g2 = p2_reference_gradients(where.r, where.s);
+  const P1Values M = p1_values(where.r, where.s);
+  const P1Gradients g1 = p1_reference_gradients();
+  Mat2 J = Mat2::Zero();  // isoparametric map at (r, s)
+  for (int k = 0; k < 6; ++k) J += mesh.nodes[el[k]] * g2[k].transpose();
+  const Mat2 J_inv_T = J.inverse().transpose();
+
+  const FlowState& s0 = solver_.previous_state();
+  const FlowState& s1 = solver_.state();
+  const double span = s1.time - s0.time;  // [s]
+  const double alpha = span > 0.0 ? std::clamp((t - s0.time) / span, 0.0, 1.0) : 1.0;
+  Vec2 u0 = Vec2::Zero(), u1 = Vec2::Zero();
+  Mat2 G0 = Mat2::Zero(), G1 = Mat2::Zero();
+  double z_b = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    const Vec2 a(s0.u[el[k]], s0.v[el[k]]), b(s1.u[el[k]], s1.v[el[k]]);
+    const Vec2 d = J_inv_T * g2[k];
+    u0 += N[k] * a;
+    u1 += N[k] * b;
+    G0 += a * d.transpose();
+    G1 += b * d.transpose();
+    z_b += N[k] * solver_.bed()[el[k]];
+    out.grad_zb += solver_.bed()[el[k]] * d;
+  }
+  double eta0 = 0.0, eta1 = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    eta0 += M[j] * s0.eta[el[j]];
+    eta1 += M[j] * s1.eta[el[j]];
+  }
+  (void)g1;
+  out.eta = (1 - alpha) * eta0 + alpha * eta1;
+  out.H = out.eta - z_b;
+  out.u = (1 - alpha) * u0 + alpha * u1;
+  out.grad_u = (1 - alpha) * G0 + alpha * G1;
+  out.du_dt = span > 0.0 ? Vec2((u1 - u0) / span) : Vec2::Zero();
+  return out;
+}
+
+void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions) {
+  const Mesh& mesh = solver_.mesh();
+  const double rho = solver_.flow_case().flow.water_density;  // [kg m^-3]
+  std::vector<Vec2> forces(mesh.element_count(), Vec2::Zero());
+  const FlowState& s = solver_.state();
+  auto element_water_mass = [&](int e) {  // rho * integral of H over e (P1 eta, P2 bed, straight)
+    const auto& el = mesh.elements[e];
+    const auto& z = solver_.bed();
+    const double eta = (s.eta[el[0]] + s.eta[el[1]] + s.eta[el[2]]) / 3.0;
+    const double zb = (z[el[3]] + z[el[4]] + z[el[5]]) / 3.0;  // exact mean of a P2 field
+    return rho * mesh.area[e] * (eta - zb);
+  };
+  // Elements near a body are found by a walk over neighbours from the element holding its
+  // centre, among those whose centroid lies within the footprint's circumcircle widened by the
+  // element's own size; the footprint holds those whose centroid is inside the rectangle.
+  std::vector<int> stamp(mesh.element_count(), -1), queue;
+  for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
+    const BodyReaction& r = reactions[k];
+    const Location where = locator_.locate(r.centre, -1);
+    if (!where.inside) continue;
+    const Vec2 axis(std::cos(r.angle), std::sin(r.angle));
+    const double reach = r.half_extents.norm();  // [m]
+    std::vector<int> covered;
+    double mass = 0.0;
+    queue.assign(1, where.element);
+    stamp[where.element] = k;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const int e = queue[q];
+      const auto& el = mesh.elements[e];
+      const Vec2 c = (mesh.nodes[el[0]] + mesh.nodes[el[1]] + mesh.nodes[el[2]]) / 3.0 - r.centre;
+      if (c.norm() > reach + 2.0 * std::sqrt(mesh.area[e])) continue;
+      if (std::abs(c.dot(axis)) <= r.half_extents.x() &&
+          std::abs(cross(axis, c)) <= r.half_extents.y()) {
+        covered.push_back(e);
+        mass += element_water_mass(e);
+      }
+      for (int n : mesh.neighbours[e])
+        if (n >= 0 && stamp[n] != k) {
+          stamp[n] = k;
+          queue.push_back(n);
+        }
+    }
+    if (covered.empty()) {  // a footprint smaller than the elements: the one holding the centre
+      covered.push_back(where.element);
+      mass = element_water_mass(where.element);
+    }
+    for (int e : covered) forces[e] += r.force / mass;  // [m s^-2]
+  }
+  solver_.set_element_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
+}
+
+}  // namespace flotsam

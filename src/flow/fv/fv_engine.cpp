@@ -1,0 +1,182 @@
+#include "flow/fv/fv_engine.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "flow/bed.hpp"
+#include "io/binary_archive.hpp"
+#include "io/vtu_writer.hpp"
+
+namespace flotsam {
+
+namespace {
+
+std::vector<double> bed_at_nodes(const Mesh& mesh, const BedConfig& bed) {
+  const BedFunction z = make_bed_function(bed);
+  std::vector<double> z_b(mesh.nodes.size());
+  for (std::size_t k = 0; k < z_b.size(); ++k) z_b[k] = z(mesh.nodes[k]);
+  return z_b;
+}
+
+}  // namespace
+
+FvEngine::FvEngine(const Mesh& mesh, const Case& flow_case)
+    : mesh_(mesh), case_(flow_case), solver_(mesh, flow_case) {}
+
+void FvEngine::initialize() {
+  solver_.initialize();
+  field_ = std::make_unique<FvFlowField>(solver_, mesh_, bed_at_nodes(mesh_, case_.bed));
+  field_->reset_to_state();
+  nodal_valid_ = false;
+}
+
+void FvEngine::step(double dt) {
+  solver_.advance(dt);
+  field_->advance_to_state();
+  nodal_valid_ = false;
+}
+
+// Frozen mode: steps of time.spin_up_step until the largest change of the velocity in one step
+// is at most 1e-5 of the largest velocity; that state is the flow at t = 0.
+void FvEngine::settle(const TimeConfig& time) {
+  constexpr double settled = 1e-5;  // [-]
+  double change = 1.0;
+  while (solver_.time() < time.spin_up_end) {
+    const ConservedState before = solver_.state();
+    solver_.advance(time.spin_up_step);
+    const ConservedState& now = solver_.state();
+    double largest = 0.0, most = 0.0;
+    for (std::size_t i = 0; i < now.h.size(); ++i) {
+      if (now.h[i] <= solver_.dry_depth() || before.h[i] <= solver_.dry_depth()) continue;
+      const Vec2 u1(now.hu[i] / now.h[i], now.hv[i] / now.h[i]);
+      const Vec2 u0(before.hu[i] / before.h[i], before.hv[i] / before.h[i]);
+      largest = std::max(largest, u1.norm());
+      most = std::max(most, (u1 - u0).norm());
+    }
+    change = largest > 0.0 ? most / largest : 0.0;
+    if (change <= settled) break;
+  }
+  if (change > settled)
+    throw_run_error(
+        "frozen mode: the flow still changes by {:.3g} of its largest velocity per step after "
+        "{} s of marching (time.spin_up_end); raise it or check the case",
+        change, solver_.time());
+  spdlog::info("steady flow by marching: change {:.3g} per step at t = {} s", change,
+               solver_.time());
+  ConservedState steady = solver_.state();
+  steady.time = 0.0;
+  solver_.set_state(steady);
+  solver_.restart_water_balance();
+  field_->reset_to_state();
+  nodal_valid_ = false;
+}
+
+// Each node takes the area-weighted mean of the wet cells around it (the bed and no velocity
+// where all are dry).
+const FlowState& FvEngine::nodal_state() const {
+  if (nodal_valid_) return nodal_;
+  const CellMesh& c = solver_.cells();
+  const ConservedState& U = solver_.state();
+  const int nodes = mesh_.node_count();
+  std::vector<double> eta(nodes, 0.0), u(nodes, 0.0), v(nodes, 0.0), weight(nodes, 0.0);
+  for (int i = 0; i < c.cell_count; ++i) {
+    if (U.h[i] <= solver_.dry_depth()) continue;
+    const double A = c.area[i];
+    for (int k : c.corners[i]) {
+      eta[k] += A * (U.h[i] + solver_.bed()[i]);
+      u[k] += A * U.hu[i] / U.h[i];
+      v[k] += A * U.hv[i] / U.h[i];
+      weight[k] += A;
+    }
+  }
+  const auto& z = field_->node_bed();
+  nodal_.time = U.time;
+  nodal_.eta.resize(mesh_.vertex_count);
+  nodal_.u.resize(nodes);
+  nodal_.v.resize(nodes);
+  for (int k = 0; k < nodes; ++k) {
+    const bool wet = weight[k] > 0.0;
+    if (k < mesh_.vertex_count) nodal_.eta[k] = wet ? eta[k] / weight[k] : z[k];
+    nodal_.u[k] = wet ? u[k] / weight[k] : 0.0;
+    nodal_.v[k] = wet ? v[k] / weight[k] : 0.0;
+  }
+  nodal_valid_ = true;
+  return nodal_;
+}
+
+void FvEngine::write_fields(const std::string& path, double t) const {
+  const CellMesh& c = solver_.cells();
+  const ConservedState& U = solver_.state();
+  const int n = c.cell_count;
+  std::vector<double> eta(n), speed(n), froude(n);
+  std::vector<Vec2> u(n);
+  for (int i = 0; i < n; ++i) {
+    const double h = U.h[i];
+    eta[i] = h + solver_.bed()[i];
+    u[i] = h > solver_.dry_depth() ? Vec2(U.hu[i] / h, U.hv[i] / h) : Vec2::Zero();
+    speed[i] = u[i].norm();
+    froude[i] = h > solver_.dry_depth() ? speed[i] / std::sqrt(case_.flow.gravity * h) : 0.0;
+  }
+  const FlowState& nodal = nodal_state();
+  std::vector<Vec2> nodal_u(mesh_.node_count());
+  for (int k = 0; k < mesh_.node_count(); ++k) nodal_u[k] = Vec2(nodal.u[k], nodal.v[k]);
+  VtuFields fields;
+  fields.add_cell_scalar("H [m]", U.h);
+  fields.add_cell_scalar("eta [m]", eta);
+  fields.add_cell_vector("u [m/s]", u);
+  fields.add_cell_scalar("|u| [m/s]", speed);
+  fields.add_cell_scalar("Froude [-]", froude);
+  fields.add_cell_scalar("z_b [m]", solver_.bed());
+  fields.add_p1_scalar("eta (nodal) [m]", nodal.eta);
+  fields.add_point_vector("u (nodal) [m/s]", nodal_u);
+  fields.add_point_scalar("z_b (nodal) [m]", field_->node_bed());
+  write_vtu(path, mesh_, fields, t, VtuCells::split);
+}
+
+void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
+  const ConservedState& U = solver_.state();
+  const WaterBalance& b = solver_.water_balance();
+  const SubStepStats& s = solver_.sub_steps();
+  w.write_value(prefix + ".time", U.time);
+  w.write(prefix + ".h", U.h);
+  w.write(prefix + ".hu", U.hu);
+  w.write(prefix + ".hv", U.hv);
+  write_water_balance(w, prefix, b);
+  w.write(prefix + ".sub_steps",
+          std::vector<double>{static_cast<double>(s.count), s.smallest, s.total});
+}
+
+void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
+  ConservedState U;
+  U.time = r.read_value<double>(prefix + ".time");
+  U.h = r.read<double>(prefix + ".h");
+  U.hu = r.read<double>(prefix + ".hu");
+  U.hv = r.read<double>(prefix + ".hv");
+  const auto cells = static_cast<std::size_t>(solver_.cells().cell_count);
+  if (U.h.size() != cells || U.hu.size() != cells || U.hv.size() != cells)
+    throw_input_error(
+        "{}: the checkpoint's flow has {} cells, the case's mesh {}: the case or its mesh "
+        "changed since the run",
+        r.path(), U.h.size(), cells);
+  solver_.set_state(U);
+  solver_.restore_water_balance(read_water_balance(r, prefix));
+  const auto s = r.read<double>(prefix + ".sub_steps");
+  solver_.restore_sub_steps({static_cast<long>(s.at(0)), s.at(1), s.at(2)});
+  field_->reset_to_state();
+  nodal_valid_ = false;
+}
+
+std::string FvEngine::summary() const {
+  const SubStepStats& s = solver_.sub_steps();
+  return fmt::format(
+      "finite volumes   {} cells, {} sub-steps, Courant step smallest {:.3g} s, mean {:.3g} s; "
+      "wet {:.1f} % of the area\n",
+      solver_.cells().cell_count, s.count, s.smallest, s.count > 0 ? s.total / s.count : 0.0,
+      100.0 * solver_.wet_fraction());
+}
+
+}  // namespace flotsam

@@ -1,0 +1,45 @@
+#pragma once
+// The finite-volume flood engine (spec 7; docs/model.md "Finite-volume engine") behind the
+// FlowEngine interface: the solver (fv_solver.hpp), the field the bodies sample
+// (fv_flow_field.hpp), the nodal view for pictures, its output, checkpoint and summary.
+#include <memory>
+#include <vector>
+
+#include "flow/flow_engine.hpp"
+#include "flow/fv/fv_flow_field.hpp"
+#include "flow/fv/fv_solver.hpp"
+#include "io/case.hpp"
+
+namespace flotsam {
+
+class FvEngine final : public FlowEngine {
+ public:
+  /// Keeps references to `mesh` and `flow_case`, which must outlive the engine.
+  FvEngine(const Mesh& mesh, const Case& flow_case);
+
+  void initialize() override;
+  void step(double dt) override;
+  void settle(const TimeConfig& time) override;
+  double time() const override { return solver_.time(); }
+  FlowField& field() override { return *field_; }
+  const FlowState& nodal_state() const override;
+  const WaterBalance& water_balance() const override { return solver_.water_balance(); }
+  double volume() const override { return solver_.volume(); }
+  const Mesh& mesh() const override { return mesh_; }
+  void write_fields(const std::string& path, double t) const override;
+  void save(ArchiveWriter& w, const std::string& prefix) const override;
+  void restore(ArchiveReader& r, const std::string& prefix) override;
+  std::string summary() const override;
+
+  const FiniteVolumeSolver& solver() const { return solver_; }
+
+ private:
+  const Mesh& mesh_;
+  const Case& case_;
+  FiniteVolumeSolver solver_;
+  std::unique_ptr<FvFlowField> field_;
+  mutable FlowState nodal_;  // the nodal view, computed when asked
+  mutable bool nodal_valid_ = false;
+};
+
+}  // namespace flotsam

@@ -1,0 +1,50 @@
+#pragma once
+// FlowField (flow_field.hpp) for the finite-volume engine: a point is located by the neighbour
+// walk (mesh/point_locator.hpp), its cell is the sub-triangle of the element holding it, and the
+// flow there is the cell's limited linear reconstruction (reconstruction.hpp) in the two states
+// that bracket the coupling step, interpolated linearly in time; du/dt is their difference over
+// the step. The bed and its slope are the plane through the cell's three corners.
+//
+// Body reactions (spec 5, two-way): the force -F_x of a body is shared among the wet cells whose
+// centroid lies in its footprint, in proportion to their area (the wet cell holding its centre
+// when none does), so the water receives exactly -F_x; a body over dry cells gives nothing to
+// the water (it rests on the bed).
+#include <vector>
+
+#include "flow/flow_field.hpp"
+#include "flow/fv/fv_solver.hpp"
+#include "mesh/point_locator.hpp"
+
+namespace flotsam {
+
+class FvFlowField final : public FlowField {
+ public:
+  /// Keeps references to `solver` and `mesh`, which must outlive the field; `node_bed` [m] is
+  /// the bed at every mesh node.
+  FvFlowField(FiniteVolumeSolver& solver, const Mesh& mesh, std::vector<double> node_bed);
+
+  /// The state now becomes the end of the current step, the previous end its beginning.
+  void advance_to_state();
+  /// Both ends of the step are the state now (a start, a restart, a steady flow).
+  void reset_to_state();
+
+  FlowSample sample(const Vec2& p, double t, int& hint) const override;
+  double time_begin() const override { return t0_; }
+  double time_end() const override { return t1_; }
+  void set_body_reactions(const std::vector<BodyReaction>& reactions) override;
+
+  const std::vector<double>& node_bed() const { return node_bed_; }
+
+ private:
+  int cell_at(const Vec2& p, int& hint, FlowSample& out) const;
+
+  FiniteVolumeSolver& solver_;
+  const Mesh& mesh_;
+  PointLocator locator_;
+  std::vector<double> node_bed_;  // [m] per mesh node
+  std::vector<Vec2> bed_slope_;   // [-] grad z_b per cell
+  CellField begin_, end_;
+  double t0_ = 0.0, t1_ = 0.0;  // [s]
+};
+
+}  // namespace flotsam

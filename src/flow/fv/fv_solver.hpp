@@ -1,0 +1,119 @@
+#pragma once
+// The finite-volume engine's solver (spec 7; docs/model.md "Finite-volume engine"): the
+// conservative form of (M-1) in (h, hu, hv) on the cells of cell_mesh.hpp, integrated over a
+// coupling step in as many explicit sub-steps as the Courant limit asks. One sub-step:
+//
+//   U1      = U^n + dt L(U^n)                      SSP Runge-Kutta 2 (Heun), (M-13)
+//   U2      = (U^n + U1 + dt L(U1)) / 2
+//   U^{n+1} = friction(U2, dt)                     implicit, never reverses the flow (M-14)
+//
+// where L is the finite-volume operator:  reconstruct (reconstruction.hpp) -> edge fluxes
+// (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
+// states, fv_boundary.hpp) -> sum per cell with the bed-slope, Coriolis, wind and body sources.
+#include <vector>
+
+#include "core/vec.hpp"
+#include "flow/friction.hpp"
+#include "flow/fv/cell_mesh.hpp"
+#include "flow/fv/fv_boundary.hpp"
+#include "flow/fv/reconstruction.hpp"
+#include "flow/water_balance.hpp"
+#include "io/case.hpp"
+#include "mesh/mesh.hpp"
+
+namespace flotsam {
+
+/// The conserved state: depth and unit discharges per cell.
+struct ConservedState {
+  double time = 0.0;           // [s]
+  std::vector<double> h;       // [m]
+  std::vector<double> hu, hv;  // [m^2/s]
+};
+
+/// What the sub-steps of the run so far did (the end-of-run summary).
+struct SubStepStats {
+  long count = 0;         // sub-steps taken
+  double smallest = 0.0;  // [s] smallest Courant step (0: none yet)
+  double total = 0.0;     // [s] time covered by Courant-limited sub-steps
+};
+
+class FiniteVolumeSolver {
+ public:
+  /// Keeps references to `mesh` and `flow_case`. Builds the cells and resolves the boundary
+  /// conditions (InputError naming a group the engine cannot take).
+  FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case);
+
+  /// Bed per cell and the case's initial state at t = 0; starts the water balance.
+  void initialize();
+  /// Advances to time() + dt [s] in Courant-limited sub-steps. RunError naming the time, the
+  /// cell's position and the quantity when the state stops being finite or a depth negative.
+  void advance(double dt);
+
+  /// Replaces the state (restart, frozen mode); the balance is left as it is.
+  void set_state(const ConservedState& state);
+  const ConservedState& state() const { return U_; }
+  double time() const { return U_.time; }
+
+  /// Body forces [N] per cell, acting on the water during the next steps (two-way coupling).
+  void set_cell_forces(std::vector<Vec2> forces) { cell_force_ = std::move(forces); }
+  const std::vector<Vec2>& cell_forces() const { return cell_force_; }
+
+  /// The state's cell values and limited gradients (what the bodies sample).
+  void fill_field(CellField& field) const;
+
+  const CellMesh& cells() const { return cells_; }
+  const std::vector<double>& bed() const { return z_; }  // [m] per cell
+  double volume() const;                                 // [m^3]
+  const WaterBalance& water_balance() const { return balance_; }
+  void restore_water_balance(const WaterBalance& b) { balance_ = b; }
+  /// V(0) = V now, nothing through the boundaries yet.
+  void restart_water_balance();
+  const SubStepStats& sub_steps() const { return stats_; }
+  void restore_sub_steps(const SubStepStats& s) { stats_ = s; }
+  /// The largest stable step [s] of the current state (infinite when all is dry and still), and
+  /// the cell that sets it.
+  double courant_step(int* cell = nullptr) const;
+  double wet_fraction() const;                     // [-] of the cells' area
+  double dry_depth() const { return dry_depth_; }  // [m]
+
+ private:
+  /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
+  void evaluate(const ConservedState& U, double t);
+  void compute_edge_fluxes(double t);
+  void sum_cell_rates(const ConservedState& U);
+  /// to = a from + b (to + dt L): the Runge-Kutta stages; the boundary outflow of L counted
+  /// into the balance with the stage's weight b.
+  void add_stage(const ConservedState& from, ConservedState& to, double a, double b, double dt);
+  void apply_friction(ConservedState& U, double dt) const;
+  void load_cells(const ConservedState& U);  // desingularised velocities into field_
+  void clamp_round_off(ConservedState& U, double t);
+  void check(const ConservedState& U) const;
+
+  const Mesh& mesh_;
+  const Case& case_;
+  CellMesh cells_;
+  FvBoundaries boundaries_;
+  FrictionModel friction_;
+  double g_;               // [m s^-2]
+  double dry_depth_;       // [m]
+  double velocity_depth_;  // H_eps [m]
+  double coriolis_;        // f [1/s]
+  Vec2 wind_stress_;       // tau_w / rho [m^2/s^2]
+
+  std::vector<double> z_;  // [m] bed per cell: the mean of its corners
+  ConservedState U_, U1_;
+  CellField field_;               // the stage's reconstruction
+  std::vector<Vec2> cell_force_;  // [N] body reactions
+  // Per edge: flux through it along its normal (mass [m^2/s], momentum [m^3/s^2]), and the
+  // hydrostatic corrections g/2 (h_e^2 - h*_e^2) of its two sides [m^3/s^2].
+  std::vector<double> flux_mass_, flux_x_, flux_y_, side_left_, side_right_;
+  std::vector<double> edge_speed_;      // [m/s] largest wave speed of the edge's Riemann problem
+  std::vector<double> edge_discharge_;  // [m^2/s] share q_e of a discharge condition
+  double stage_courant_step_ = 0.0;     // [s] of the last evaluation of L
+  std::vector<double> rate_h_, rate_hu_, rate_hv_;  // dU/dt per cell
+  std::vector<double> outflow_rate_;                // [m^3/s] per mesh group, this stage
+  WaterBalance balance_;
+  SubStepStats stats_;
+};
+
+}  // namespace flotsam
