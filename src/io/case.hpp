@@ -42,10 +42,18 @@ struct BoundaryCondition {
   int line = 0;        // line of the group's key in the case file, for messages (0: built in code)
 };
 
+/// The finite-volume engine's cells (docs/model.md "Finite-volume engine"): the mesh's
+/// triangles, or each six-node triangle split into its four sub-triangles (the paper's Fig. 3).
+enum class FvCells { elements, split };
+
 /// Numerical choices of the finite-volume engine (src/flow/fv, docs/model.md).
 struct FiniteVolumeConfig {
-  int order = 2;                 // 1: piecewise constant; 2: MUSCL reconstruction with a limiter
-  double courant = 0.45;         // [-] of the explicit step, dt = courant * min(r_in / (|u| + c))
+  FvCells cells = FvCells::elements;
+  int order = 2;         // 1: piecewise constant; 2: MUSCL reconstruction with a limiter
+  double courant = 0.9;  // [-] in (0, 1]: dt = courant * min(2 A / (3 l_max) / s), s the
+                         // largest wave speed at the cell's edges; up to 0.5 depths stay
+                         // positive by construction, above a sub-step that makes one negative is
+                         // retried at half the step (model.md (M-16))
   double velocity_depth = 1e-3;  // H_eps [m]: below it velocities are desingularised (model.md)
 };
 

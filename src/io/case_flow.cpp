@@ -55,6 +55,9 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
   FiniteVolumeConfig fv;
   fv.order = static_cast<int>(m.integer("order", fv.order, Range::between(1, 2)));
   fv.courant = m.number("courant", fv.courant, {0.0, 1.0, true, false});
+  if (m.has("cells"))
+    fv.cells = m.get("cells").choice<FvCells>(
+        {{"elements", FvCells::elements}, {"split", FvCells::split}});
   fv.velocity_depth = m.number("velocity_depth", fv.velocity_depth, Range::positive());
   return fv;
 }

@@ -355,7 +355,7 @@ TEST(CaseFile, EngineIsFemByDefault) {
   const Case c = parse_case(base_case, "case.yaml");
   EXPECT_EQ(c.flow.engine, FlowEngineKind::fem);
   EXPECT_EQ(c.flow.fv.order, 2);
-  EXPECT_EQ(c.flow.fv.courant, 0.45);
+  EXPECT_EQ(c.flow.fv.courant, 0.9);
   EXPECT_EQ(c.flow.fv.velocity_depth, 1e-3);
   EXPECT_TRUE(c.flow.initial_eta.empty());
   EXPECT_TRUE(c.flow.initial_u.empty());
@@ -367,17 +367,19 @@ TEST(CaseFile, EngineIsFemByDefault) {
 TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
   const Case c =
       parse_case(edited("  initial:",
-                        "  engine: fv\n  fv: {order: 1, courant: 0.9, velocity_depth: 0.002}\n"
-                        "  initial:"),
+                        "  engine: fv\n  fv: {order: 1, courant: 0.4, velocity_depth: 0.002, "
+                        "cells: split}\n  initial:"),
                  "case.yaml");
   EXPECT_EQ(c.flow.engine, FlowEngineKind::fv);
   EXPECT_EQ(c.flow.fv.order, 1);
-  EXPECT_EQ(c.flow.fv.courant, 0.9);
+  EXPECT_EQ(c.flow.fv.courant, 0.4);
+  EXPECT_EQ(c.flow.fv.cells, FvCells::split);
   EXPECT_EQ(c.flow.fv.velocity_depth, 0.002);
   const Case d = parse_case(edited("  initial:", "  engine: fv\n  initial:"), "case.yaml");
   EXPECT_EQ(d.flow.engine, FlowEngineKind::fv);
   EXPECT_EQ(d.flow.fv.order, 2);  // the defaults
-  EXPECT_EQ(d.flow.fv.courant, 0.45);
+  EXPECT_EQ(d.flow.fv.courant, 0.9);
+  EXPECT_EQ(d.flow.fv.cells, FvCells::elements);
   EXPECT_EQ(
       parse_case(edited("  initial:", "  engine: fv\n  fv: {courant: 1}\n  initial:"), "case.yaml")
           .flow.fv.courant,
@@ -465,8 +467,10 @@ TEST(CaseFileError, EngineKeysAreChecked) {
             "case.yaml:6: flow.fv.courant: expected a number in (0, 1], got 1.2");
   EXPECT_EQ(error_of(fv("velocity_depth: 0")),
             "case.yaml:6: flow.fv.velocity_depth: expected a number > 0, got 0");
+  EXPECT_EQ(error_of(fv("cells: quads")),
+            "case.yaml:6: flow.fv.cells: unknown value 'quads'; expected one of: elements, split");
   EXPECT_EQ(error_of(fv("limiter: minmod")),
-            "case.yaml:6: flow.fv.limiter: unknown key; allowed here: order, courant, "
+            "case.yaml:6: flow.fv.limiter: unknown key; allowed here: order, courant, cells, "
             "velocity_depth");
 }
 

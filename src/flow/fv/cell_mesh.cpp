@@ -58,9 +58,11 @@ int CellMesh::sub_cell(int element, double r, double s) {
   return first + 3;
 }
 
-CellMesh build_cell_mesh(const Mesh& mesh) {
+CellMesh build_cell_mesh(const Mesh& mesh, FvCells kind) {
   CellMesh c;
-  const int n = 4 * mesh.element_count();
+  c.kind = kind;
+  const int per_element = kind == FvCells::split ? 4 : 1;
+  const int n = per_element * mesh.element_count();
   c.cell_count = n;
   c.corners.resize(n);
   c.centroid.resize(n);
@@ -72,9 +74,10 @@ CellMesh build_cell_mesh(const Mesh& mesh) {
   c.gradient_weight.resize(n);
   c.neighbour.assign(n, {-1, -1, -1});
   for (int e = 0; e < mesh.element_count(); ++e)
-    for (int q = 0; q < 4; ++q) {
-      const int i = 4 * e + q;
-      for (int k = 0; k < 3; ++k) c.corners[i][k] = mesh.elements[e][Mesh::sub_triangles[q][k]];
+    for (int q = 0; q < per_element; ++q) {
+      const int i = per_element * e + q;
+      for (int k = 0; k < 3; ++k)
+        c.corners[i][k] = mesh.elements[e][per_element == 4 ? Mesh::sub_triangles[q][k] : k];
       set_geometry(mesh, c, i);
     }
 
@@ -108,11 +111,13 @@ CellMesh build_cell_mesh(const Mesh& mesh) {
     }
 
   // Boundary groups: a mesh boundary edge (local edge k of its element: vertex k, mid node 3+k,
-  // vertex k+1) is two cell edges.
+  // vertex k+1) is one cell edge, or two when the elements are split.
   for (const BoundaryEdge& b : mesh.boundary) {
     const auto& el = mesh.elements[b.element];
-    const int ends[2][2] = {{el[b.local_edge], el[3 + b.local_edge]},
-                            {el[3 + b.local_edge], el[(b.local_edge + 1) % 3]}};
+    const int k = b.local_edge, v0 = el[k], mid = el[3 + k], v1 = el[(k + 1) % 3];
+    const std::vector<std::array<int, 2>> ends =
+        kind == FvCells::split ? std::vector<std::array<int, 2>>{{v0, mid}, {mid, v1}}
+                               : std::vector<std::array<int, 2>>{{v0, v1}};
     for (const auto& end : ends) {
       const auto it = edge_of.find(edge_key(end[0], end[1]));
       if (it == edge_of.end() || c.right[it->second] >= 0)

@@ -1,8 +1,10 @@
 #pragma once
-// The finite-volume engine's cells (docs/model.md "Finite-volume engine"): each six-node triangle
-// of the case's mesh split into its four straight sub-triangles, as the paper's Fig. 3 splits
-// it. The cells' corners are the mesh's P2 nodes, so the engine resolves the flow as finely as
-// the FEM's velocity on the same mesh file, and a pier's circle is followed by its mid nodes.
+// The finite-volume engine's cells (docs/model.md "Finite-volume engine", flow.fv.cells):
+//   elements: the mesh's triangles (corners v0 v1 v2), cell e = element e;
+//   split:    each six-node triangle split into its four straight sub-triangles, as the paper's
+//             Fig. 3 splits it: the cells' corners are the mesh's P2 nodes, so the engine
+//             resolves the flow as finely as the FEM's velocity on the same mesh file, and a
+//             pier's circle is followed by its mid nodes (4x the cells, half the time step).
 //
 //        2                 cell 4e + 0: (v0, m01, m20)     cell 4e + 2: (m20, m12, v2)
 //        | \               cell 4e + 1: (m01, v1, m12)     cell 4e + 3: (m01, m12, m20)
@@ -15,11 +17,13 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "io/case.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
 
 struct CellMesh {
+  FvCells kind = FvCells::split;
   int cell_count = 0;
   std::vector<std::array<int, 3>> corners;  // mesh node indices, counter-clockwise
   std::vector<Vec2> centroid;               // [m]
@@ -43,12 +47,16 @@ struct CellMesh {
   std::vector<int> group;                  // boundary group (Mesh::group_names), -1 inside
   std::vector<int> boundary_edges;         // the edges with right == -1, in order
 
-  /// The cell of `element` that holds the point of reference coordinates (r, s) in it.
+  /// The sub-triangle of `element` that holds the point of reference coordinates (r, s) in it.
   static int sub_cell(int element, double r, double s);
+  /// The cell that holds that point (its element, or the sub-triangle).
+  int cell_of(int element, double r, double s) const {
+    return kind == FvCells::split ? sub_cell(element, r, s) : element;
+  }
 };
 
-/// Splits the mesh's elements into cells and builds their edges and geometry. Throws
-/// std::logic_error when a boundary edge of the mesh finds no group (a malformed Mesh).
-CellMesh build_cell_mesh(const Mesh& mesh);
+/// The cells of `kind` with their edges and geometry. Throws std::logic_error when a boundary
+/// edge of the mesh finds no group (a malformed Mesh).
+CellMesh build_cell_mesh(const Mesh& mesh, FvCells kind = FvCells::split);
 
 }  // namespace flotsam

@@ -3,14 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
+
 namespace flotsam {
 
 FvBoundaries FvBoundaries::resolve(const Mesh& mesh, const FlowConfig& flow) {
   FvBoundaries b;
   b.group_condition.assign(mesh.group_names.size(), -1);
   for (int k = 0; k < static_cast<int>(flow.boundaries.size()); ++k) {
-    const int g = mesh.find_group(flow.boundaries[k].group);
-    if (g >= 0) b.group_condition[g] = k;
+    const BoundaryCondition& bc = flow.boundaries[k];
+    const int g = mesh.find_group(bc.group);
+    if (g < 0)
+      throw_input_error("flow.boundaries.{}{}: the mesh '{}' has no boundary group '{}'", bc.group,
+                        bc.line > 0 ? fmt::format(" (line {})", bc.line) : "", mesh.source,
+                        bc.group);
+    b.group_condition[g] = k;
   }
   return b;
 }

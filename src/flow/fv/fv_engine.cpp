@@ -75,8 +75,8 @@ void FvEngine::settle(const TimeConfig& time) {
   nodal_valid_ = false;
 }
 
-// Each node takes the area-weighted mean of the wet cells around it (the bed and no velocity
-// where all are dry).
+// Each corner of a cell takes the area-weighted mean of the wet cells around it (the bed and no
+// velocity where all are dry); with cells = elements, a mid node the mean of its edge's ends.
 const FlowState& FvEngine::nodal_state() const {
   if (nodal_valid_) return nodal_;
   const CellMesh& c = solver_.cells();
@@ -104,6 +104,13 @@ const FlowState& FvEngine::nodal_state() const {
     nodal_.u[k] = wet ? u[k] / weight[k] : 0.0;
     nodal_.v[k] = wet ? v[k] / weight[k] : 0.0;
   }
+  if (c.kind == FvCells::elements)
+    for (const auto& el : mesh_.elements)
+      for (int k = 0; k < 3; ++k) {
+        const int a = el[k], b = el[(k + 1) % 3], mid = el[3 + k];
+        nodal_.u[mid] = 0.5 * (nodal_.u[a] + nodal_.u[b]);
+        nodal_.v[mid] = 0.5 * (nodal_.v[a] + nodal_.v[b]);
+      }
   nodal_valid_ = true;
   return nodal_;
 }
@@ -134,7 +141,8 @@ void FvEngine::write_fields(const std::string& path, double t) const {
   fields.add_p1_scalar("eta (nodal) [m]", nodal.eta);
   fields.add_point_vector("u (nodal) [m/s]", nodal_u);
   fields.add_point_scalar("z_b (nodal) [m]", field_->node_bed());
-  write_vtu(path, mesh_, fields, t, VtuCells::split);
+  write_vtu(path, mesh_, fields, t,
+            c.kind == FvCells::split ? VtuCells::split : VtuCells::quadratic);
 }
 
 void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
@@ -146,8 +154,8 @@ void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
   w.write(prefix + ".hu", U.hu);
   w.write(prefix + ".hv", U.hv);
   write_water_balance(w, prefix, b);
-  w.write(prefix + ".sub_steps",
-          std::vector<double>{static_cast<double>(s.count), s.smallest, s.total});
+  w.write(prefix + ".sub_steps", std::vector<double>{static_cast<double>(s.count), s.smallest,
+                                                     s.total, static_cast<double>(s.rejected)});
 }
 
 void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
@@ -165,7 +173,8 @@ void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
   solver_.set_state(U);
   solver_.restore_water_balance(read_water_balance(r, prefix));
   const auto s = r.read<double>(prefix + ".sub_steps");
-  solver_.restore_sub_steps({static_cast<long>(s.at(0)), s.at(1), s.at(2)});
+  solver_.restore_sub_steps(
+      {static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1), s.at(2)});
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -173,10 +182,10 @@ void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
 std::string FvEngine::summary() const {
   const SubStepStats& s = solver_.sub_steps();
   return fmt::format(
-      "finite volumes   {} cells, {} sub-steps, Courant step smallest {:.3g} s, mean {:.3g} s; "
-      "wet {:.1f} % of the area\n",
-      solver_.cells().cell_count, s.count, s.smallest, s.count > 0 ? s.total / s.count : 0.0,
-      100.0 * solver_.wet_fraction());
+      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), Courant step "
+      "smallest {:.3g} s, mean {:.3g} s; wet {:.1f} % of the area\n",
+      solver_.cells().cell_count, s.count, s.rejected, s.smallest,
+      s.count > 0 ? s.total / s.count : 0.0, 100.0 * solver_.wet_fraction());
 }
 
 }  // namespace flotsam

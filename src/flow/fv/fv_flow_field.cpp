@@ -40,7 +40,7 @@ int FvFlowField::cell_at(const Vec2& p, int& hint, FlowSample& out) const {
     out.boundary_group = where.boundary_group;
     return -1;
   }
-  return CellMesh::sub_cell(where.element, where.r, where.s);
+  return solver_.cells().cell_of(where.element, where.r, where.s);
 }
 
 FlowSample FvFlowField::sample(const Vec2& p, double t, int& hint) const {
@@ -58,9 +58,10 @@ FlowSample FvFlowField::sample(const Vec2& p, double t, int& hint) const {
   for (int s = 0; s < 2; ++s) {
     const CellField& f = s == 0 ? begin_ : end_;
     const double w = s == 0 ? 1.0 - alpha : alpha;
-    const double h = std::max(0.0, f.h[i] + f.grad_h[i].dot(d));
-    H += w * h;
-    eta += w * (h > 0.0 ? f.eta[i] + f.grad_eta[i].dot(d) : z_b);
+    // A wet cell's surface is its reconstruction, its depth that surface over the bed plane.
+    const double eta_s = f.h[i] > 0.0 ? f.eta[i] + f.grad_eta[i].dot(d) : z_b;
+    H += w * std::max(0.0, eta_s - z_b);
+    eta += w * std::max(eta_s, z_b);
     u_at[s] = Vec2(f.u[i] + f.grad_u[i].dot(d), f.v[i] + f.grad_v[i].dot(d));
     G.row(0) += w * f.grad_u[i].transpose();
     G.row(1) += w * f.grad_v[i].transpose();

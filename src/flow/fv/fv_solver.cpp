@@ -25,12 +25,11 @@ inline double velocity(double h, double hu, double eps4) {
   return h4 >= eps4 ? hu / h : std::sqrt(2.0) * h * hu / std::sqrt(h4 + eps4);
 }
 
-// The value of the reconstruction of cell i at the midpoint of its local edge k.
-inline FaceState face_value(const CellMesh& c, const CellField& f, int i, int k) {
-  const Vec2& r = c.to_edge[i][k];
-  const double h = std::max(0.0, f.h[i] + f.grad_h[i].dot(r));
-  const double eta = f.eta[i] + f.grad_eta[i].dot(r);
-  return {h, eta - h, f.u[i] + f.grad_u[i].dot(r), f.v[i] + f.grad_v[i].dot(r)};
+// The value of the reconstruction of cell i at the midpoint of its local edge k; the bed there
+// is eta_e - h_e (model.md (M-12)).
+inline FaceState face_value(const CellField& f, int i, int k) {
+  const int e = 3 * i + k;
+  return {f.edge_h[e], f.edge_eta[e] - f.edge_h[e], f.edge_u[e], f.edge_v[e]};
 }
 
 }  // namespace
@@ -38,7 +37,7 @@ inline FaceState face_value(const CellMesh& c, const CellField& f, int i, int k)
 FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case)
     : mesh_(mesh),
       case_(flow_case),
-      cells_(build_cell_mesh(mesh)),
+      cells_(build_cell_mesh(mesh, flow_case.flow.fv.cells)),
       boundaries_(FvBoundaries::resolve(mesh, flow_case.flow)),
       friction_(FrictionModel::from(flow_case.flow)) {
   const FlowConfig& flow = flow_case.flow;
@@ -153,7 +152,7 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) {
   for (int edge : c.boundary_edges) {
     const int k = boundaries_.group_condition[c.group[edge]];
     if (k < 0 || conditions[k].kind != BoundaryCondition::Kind::discharge) continue;
-    const double h = face_value(c, field_, c.left[edge], c.left_slot[edge]).h;
+    const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
     edge_discharge_[edge] = h * std::sqrt(h);
     weight_sum[k] += c.length[edge] * edge_discharge_[edge];
     length_sum[k] += c.length[edge];
@@ -170,12 +169,12 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) {
 #pragma omp parallel for schedule(static)
   for (int edge = 0; edge < c.edge_count; ++edge) {
     const Vec2 n = c.normal[edge];
-    const FaceState L = face_value(c, field_, c.left[edge], c.left_slot[edge]);
+    const FaceState L = face_value(field_, c.left[edge], c.left_slot[edge]);
     const int j = c.right[edge];
     const int condition = j < 0 ? boundaries_.group_condition[c.group[edge]] : -1;
     FaceState R;
     if (j >= 0) {
-      R = face_value(c, field_, j, c.right_slot[edge]);
+      R = face_value(field_, j, c.right_slot[edge]);
     } else {
       static const BoundaryCondition wall;
       R = ghost_state(condition >= 0 ? conditions[condition] : wall, L, n, t, edge_discharge_[edge],
@@ -222,7 +221,7 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) {
       const bool left = c.cell_is_left[i][k];
       const double sign = left ? 1.0 : -1.0, l = c.length[e];
       const Vec2 n = sign * c.normal[e];
-      const FaceState F = face_value(c, field_, i, k);
+      const FaceState F = face_value(field_, i, k);
       const double side =
           (left ? side_left_[e] : side_right_[e]) + 0.5 * g * (F.h + h_i) * (F.z - z_i);
       dh -= sign * l * flux_mass_[e];
@@ -263,7 +262,8 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   for (int i = 0; i < cells_.cell_count; ++i) {
     const double h = U.h[i];
     if (h <= 0.0) continue;
-    const double speed = std::hypot(velocity(h, U.hu[i], eps4), velocity(h, U.hv[i], eps4));
+    const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
+    const double speed = std::sqrt(u * u + v * v);
     const double factor = 1.0 / (1.0 + dt * friction_.rate(speed, h));
     U.hu[i] *= factor;
     U.hv[i] *= factor;
@@ -288,41 +288,63 @@ double FiniteVolumeSolver::courant_step(int* cell) const {
   return stage_courant_step_;
 }
 
-void FiniteVolumeSolver::add_stage(const ConservedState& from, ConservedState& to, double a,
-                                   double b, double dt) {
-  // to = a from + b (to + dt L)   (with a = 0, b = 1: to = to + dt L)
+// out = a U + b (y + dt L(y)), L evaluated last (rate_): the Runge-Kutta stages. Returns true
+// when a depth came out negative or a value not finite (clamp_round_off then looks at every
+// cell). The balance is counted once per sub-step, with the weights of the whole step:
+// U^{n+1} = U^n + dt/2 (L(U^n) + L(U1)), so each stage's boundary outflow counts half.
+bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState& y,
+                                   ConservedState& out, double a, double b, double dt) {
   const int n = cells_.cell_count;
-#pragma omp parallel for schedule(static)
+  bool suspect = false;
+#pragma omp parallel for schedule(static) reduction(|| : suspect)
   for (int i = 0; i < n; ++i) {
-    to.h[i] = a * from.h[i] + b * (to.h[i] + dt * rate_h_[i]);
-    to.hu[i] = a * from.hu[i] + b * (to.hu[i] + dt * rate_hu_[i]);
-    to.hv[i] = a * from.hv[i] + b * (to.hv[i] + dt * rate_hv_[i]);
+    out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i]);
+    out.hu[i] = a * U.hu[i] + b * (y.hu[i] + dt * rate_hu_[i]);
+    out.hv[i] = a * U.hv[i] + b * (y.hv[i] + dt * rate_hv_[i]);
+    suspect = suspect || !(out.h[i] >= 0.0) || !std::isfinite(out.hu[i] + out.hv[i]);
   }
   for (std::size_t g = 0; g < outflow_rate_.size(); ++g) {
-    balance_.group_outflow[g] += b * dt * outflow_rate_[g];
-    balance_.outflow += b * dt * outflow_rate_[g];
+    balance_.group_outflow[g] += 0.5 * dt * outflow_rate_[g];
+    balance_.outflow += 0.5 * dt * outflow_rate_[g];
     balance_.group_rate[g] = outflow_rate_[g];
   }
+  return suspect;
 }
 
+// Sub-steps of dt = min(courant * Courant step, what is left), each retried at half the step
+// when it leaves a negative depth or a value that is not finite: the Courant limit with
+// courant <= 0.5 guarantees positive depths (model.md (M-16)); larger values, stable and twice
+// as fast, rely on this retry at the rare fronts where positivity needs the smaller step.
 void FiniteVolumeSolver::advance(double dt) {
   const double t_end = U_.time + dt;
+  U1_.h.resize(U_.h.size());
+  U1_.hu.resize(U_.h.size());
+  U1_.hv.resize(U_.h.size());
+  double shrink = 1.0;  // [-] of the Courant step, halved at each retry
   while (U_.time < t_end - 1e-12 * dt) {
     const double t = U_.time;
+    const WaterBalance balance_before = balance_;
     // Stage 1: U1 = U + dt L(U), dt from the Courant limit of L(U)'s wave speeds.
     evaluate(U_, t);
     const double dt_courant = stage_courant_step_;
-    const double h = std::min(dt_courant, t_end - t);
-    U1_ = U_;
-    add_stage(U_, U1_, 0.0, 1.0, h);
-    clamp_round_off(U1_, t + h);
+    const double h = std::min(shrink * dt_courant, t_end - t);
+    int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5) : -1;
     // Stage 2: U^{n+1} = (U + U1 + dt L(U1)) / 2, then friction.
-    evaluate(U1_, t + h);
-    add_stage(U_, U1_, 0.5, 0.5, h);
+    if (bad < 0) {
+      evaluate(U1_, t + h);
+      if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0);
+    }
+    if (bad >= 0) {
+      balance_ = balance_before;
+      ++stats_.rejected;
+      shrink *= 0.5;
+      if (shrink < 1.0 / 64.0) fail_at(U1_, bad, t + h);
+      continue;
+    }
     apply_friction(U1_, h);
-    clamp_round_off(U1_, t + h);
     std::swap(U_, U1_);
-    U_.time = t_end - t <= dt_courant ? t_end : t + h;
+    U_.time = t_end - t <= shrink * dt_courant ? t_end : t + h;
+    shrink = 1.0;
     ++stats_.count;
     stats_.total += h;
     if (std::isfinite(dt_courant) && (stats_.smallest == 0.0 || dt_courant < stats_.smallest))
@@ -333,26 +355,29 @@ void FiniteVolumeSolver::advance(double dt) {
 }
 
 // Round-off can leave a depth of -1e-17 m where a cell drained; such depths become 0 and the
-// volume this adds is counted as a source, so the balance stays exact. A deeper negative depth,
-// or a value that is not finite, stops the run naming the cell.
-void FiniteVolumeSolver::clamp_round_off(ConservedState& U, double t) {
+// volume this adds to the sub-step's result (`weight` of it: half for the first stage) is
+// counted as a source, so the balance stays exact. Returns a cell whose depth is more negative,
+// or whose state is not finite, or -1.
+int FiniteVolumeSolver::clamp_round_off(ConservedState& U, double weight) {
   for (int i = 0; i < cells_.cell_count; ++i) {
     const double h = U.h[i];
     if (h >= 0.0 && std::isfinite(U.hu[i]) && std::isfinite(U.hv[i])) continue;
-    const Vec2& p = cells_.centroid[i];
-    if (!std::isfinite(h) || !std::isfinite(U.hu[i]) || !std::isfinite(U.hv[i]))
-      throw_run_error(
-          "t = {:.6g} s: the flow is not finite in the cell at ({:.3f}, {:.3f}) m (h = {}, hu = "
-          "{}, hv = {}); lower flow.fv.courant or check the case",
-          t, p.x(), p.y(), h, U.hu[i], U.hv[i]);
-    if (h < -negative_depth_round_off)
-      throw_run_error(
-          "t = {:.6g} s: the depth went negative ({:.3g} m) in the cell at ({:.3f}, {:.3f}) m; "
-          "lower flow.fv.courant",
-          t, h, p.x(), p.y());
-    balance_.source -= h * cells_.area[i];
+    if (!(h >= -negative_depth_round_off) || !std::isfinite(U.hu[i]) || !std::isfinite(U.hv[i]))
+      return i;
+    balance_.source -= weight * h * cells_.area[i];
     U.h[i] = U.hu[i] = U.hv[i] = 0.0;
   }
+  return -1;
+}
+
+void FiniteVolumeSolver::fail_at(const ConservedState& U, int i, double t) const {
+  const Vec2& p = cells_.centroid[i];
+  throw_run_error(
+      "t = {:.6g} s: the flow fails in the cell at ({:.3f}, {:.3f}) m even at 1/64 of the "
+      "Courant step (h = {:.6g} m, hu = {:.6g}, hv = {:.6g} m^2/s): a negative depth or a value "
+      "that is not finite; check the case (a discharge into a dry cell too small for it, a bed "
+      "formula), or lower flow.fv.courant",
+      t, p.x(), p.y(), U.h[i], U.hu[i], U.hv[i]);
 }
 
 void FiniteVolumeSolver::check(const ConservedState& U) const {

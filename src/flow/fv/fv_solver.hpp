@@ -33,6 +33,7 @@ struct ConservedState {
 /// What the sub-steps of the run so far did (the end-of-run summary).
 struct SubStepStats {
   long count = 0;         // sub-steps taken
+  long rejected = 0;      // sub-steps retried at half the step (a negative depth)
   double smallest = 0.0;  // [s] smallest Courant step (0: none yet)
   double total = 0.0;     // [s] time covered by Courant-limited sub-steps
 };
@@ -46,7 +47,8 @@ class FiniteVolumeSolver {
   /// Bed per cell and the case's initial state at t = 0; starts the water balance.
   void initialize();
   /// Advances to time() + dt [s] in Courant-limited sub-steps. RunError naming the time, the
-  /// cell's position and the quantity when the state stops being finite or a depth negative.
+  /// cell's position and the quantity when the state stops being finite or a depth negative
+  /// even at 1/64 of the Courant step.
   void advance(double dt);
 
   /// Replaces the state (restart, frozen mode); the balance is left as it is.
@@ -81,12 +83,12 @@ class FiniteVolumeSolver {
   void evaluate(const ConservedState& U, double t);
   void compute_edge_fluxes(double t);
   void sum_cell_rates(const ConservedState& U);
-  /// to = a from + b (to + dt L): the Runge-Kutta stages; the boundary outflow of L counted
-  /// into the balance with the stage's weight b.
-  void add_stage(const ConservedState& from, ConservedState& to, double a, double b, double dt);
+  bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
+                 double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
   void load_cells(const ConservedState& U);  // desingularised velocities into field_
-  void clamp_round_off(ConservedState& U, double t);
+  int clamp_round_off(ConservedState& U, double weight);
+  [[noreturn]] void fail_at(const ConservedState& U, int cell, double t) const;
   void check(const ConservedState& U) const;
 
   const Mesh& mesh_;

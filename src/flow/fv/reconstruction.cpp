@@ -7,24 +7,27 @@ namespace flotsam {
 void CellField::resize(int cells) {
   for (auto* a : {&h, &eta, &u, &v}) a->assign(cells, 0.0);
   for (auto* a : {&grad_h, &grad_eta, &grad_u, &grad_v}) a->assign(cells, Vec2::Zero());
+  for (auto* a : {&edge_h, &edge_eta, &edge_u, &edge_v}) a->assign(3 * cells, 0.0);
 }
 
 namespace {
 
-// Barth-Jespersen: the limited gradient of phi in cell i from the neighbour differences d[k].
-Vec2 limited_gradient(const CellMesh& c, int i, const double d[3]) {
+// Barth-Jespersen: the limited gradient of phi in cell i from the neighbour differences d[k],
+// and phi's values at the cell's three edges. The largest alpha keeping every edge value within
+// [d_min, d_max] of the cell's is set by the largest and the smallest increment alone.
+Vec2 limit(const CellMesh& c, int i, const double d[3], double phi, double* edge) {
   const auto& w = c.gradient_weight[i];
+  const auto& r = c.to_edge[i];
   const Vec2 g = d[0] * w[0] + d[1] * w[1] + d[2] * w[2];
-  const double d_max = std::max({0.0, d[0], d[1], d[2]});
-  const double d_min = std::min({0.0, d[0], d[1], d[2]});
+  const double d_max = std::max(std::max(0.0, d[0]), std::max(d[1], d[2]));
+  const double d_min = std::min(std::min(0.0, d[0]), std::min(d[1], d[2]));
+  const double delta[3] = {g.dot(r[0]), g.dot(r[1]), g.dot(r[2])};  // edge - cell value
+  const double top = std::max(delta[0], std::max(delta[1], delta[2]));
+  const double bottom = std::min(delta[0], std::min(delta[1], delta[2]));
   double alpha = 1.0;
-  for (int k = 0; k < 3; ++k) {
-    const double delta = g.dot(c.to_edge[i][k]);  // edge value - cell value
-    if (delta > d_max)
-      alpha = std::min(alpha, d_max / delta);
-    else if (delta < d_min)
-      alpha = std::min(alpha, d_min / delta);
-  }
+  if (top > d_max) alpha = d_max / top;
+  if (bottom < d_min) alpha = std::min(alpha, d_min / bottom);
+  for (int k = 0; k < 3; ++k) edge[k] = phi + alpha * delta[k];
   return alpha * g;
 }
 
@@ -36,6 +39,12 @@ void reconstruct(const CellMesh& c, int order, double dry_depth, CellField& f) {
   for (int i = 0; i < n; ++i) {
     if (order < 2 || f.h[i] <= dry_depth) {
       f.grad_h[i] = f.grad_eta[i] = f.grad_u[i] = f.grad_v[i] = Vec2::Zero();
+      for (int k = 0; k < 3; ++k) {
+        f.edge_h[3 * i + k] = f.h[i];
+        f.edge_eta[3 * i + k] = f.eta[i];
+        f.edge_u[3 * i + k] = f.u[i];
+        f.edge_v[3 * i + k] = f.v[i];
+      }
       continue;
     }
     double dh[3], deta[3], du[3], dv[3];
@@ -47,10 +56,12 @@ void reconstruct(const CellMesh& c, int order, double dry_depth, CellField& f) {
       du[k] = wet ? f.u[j] - f.u[i] : 0.0;
       dv[k] = wet ? f.v[j] - f.v[i] : 0.0;
     }
-    f.grad_h[i] = limited_gradient(c, i, dh);
-    f.grad_eta[i] = limited_gradient(c, i, deta);
-    f.grad_u[i] = limited_gradient(c, i, du);
-    f.grad_v[i] = limited_gradient(c, i, dv);
+    double* edge_h = &f.edge_h[3 * i];
+    f.grad_h[i] = limit(c, i, dh, f.h[i], edge_h);
+    for (int k = 0; k < 3; ++k) edge_h[k] = std::max(0.0, edge_h[k]);  // round-off below 0
+    f.grad_eta[i] = limit(c, i, deta, f.eta[i], &f.edge_eta[3 * i]);
+    f.grad_u[i] = limit(c, i, du, f.u[i], &f.edge_u[3 * i]);
+    f.grad_v[i] = limit(c, i, dv, f.v[i], &f.edge_v[3 * i]);
   }
 }
 

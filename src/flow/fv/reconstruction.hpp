@@ -19,16 +19,18 @@
 
 namespace flotsam {
 
-/// The flow in every cell with its limited gradients: what the fluxes, the sources and the
-/// bodies' samples read.
+/// The flow in every cell with its limited gradients and its values at the midpoints of the
+/// cell's three edges: what the fluxes, the sources and the bodies' samples read.
 struct CellField {
   std::vector<double> h, eta, u, v;                    // [m], [m], [m/s], [m/s]
   std::vector<Vec2> grad_h, grad_eta, grad_u, grad_v;  // [-], [-], [1/s], [1/s]
+  // At edge k of cell i, index 3 i + k: h_e >= 0, eta_e, u_e, v_e.
+  std::vector<double> edge_h, edge_eta, edge_u, edge_v;
 
   void resize(int cells);
 };
 
-/// Fills `field`'s gradients from its cell values h, eta, u, v.
+/// Fills `field`'s gradients and edge values from its cell values h, eta, u, v.
 void reconstruct(const CellMesh& cells, int order, double dry_depth, CellField& field);
 
 }  // namespace flotsam

@@ -1,0 +1,128 @@
+// Unit tests of the finite-volume engine behind the FlowEngine interface (flow/fv/fv_engine.hpp):
+// a checkpoint continues bit for bit, and the nodal view of a lake at rest is its level.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../../support/scratch_path.hpp"
+#include "flow/fv/fv_engine.hpp"
+#include "fv_test_cases.hpp"
+#include "io/binary_archive.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+// A dam break over a sloping bed with Manning friction, inflow at the left and a level held at
+// the right: every part of the state and of the balance moves.
+Case moving_case() {
+  Case c = test::closed_basin_case(0.0);
+  c.flow.initial_eta = Expression("x < 4 ? 1.5 : 1", "test: flow.initial.eta");
+  c.bed.kind = BedConfig::Kind::expression;
+  c.bed.expression = Expression("0.02*x - 0.05*y", "test: bed.expression");
+  c.flow.friction = FrictionLaw::manning;
+  c.flow.friction_coefficient = 0.03;
+  test::condition_of(c, "left") = {BoundaryCondition::Kind::discharge, "left", TimeSeries(0.5),
+                                   TimeSeries(0.0)};
+  test::condition_of(c, "right") = {BoundaryCondition::Kind::elevation, "right", TimeSeries(1.0),
+                                    TimeSeries(0.0)};
+  return c;
+}
+
+TEST(FvEngine, CheckpointRoundTripContinuesBitForBit) {
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 10, 4, true});
+  const Case c = moving_case();
+  FvEngine running(mesh, c);
+  running.initialize();
+  for (int n = 0; n < 3; ++n) running.step(0.2);
+  const std::string path = test::scratch_path("fv_engine_checkpoint.bin").string();
+  {
+    ArchiveWriter w(path);
+    running.save(w, "flow");
+    w.close();
+  }
+  FvEngine restarted(mesh, c);
+  restarted.initialize();
+  ArchiveReader r(path);
+  restarted.restore(r, "flow");
+  EXPECT_EQ(restarted.time(), running.time());
+
+  running.step(0.2);
+  restarted.step(0.2);
+  const ConservedState& a = running.solver().state();
+  const ConservedState& b = restarted.solver().state();
+  ASSERT_GT(std::abs(a.hu[0]) + std::abs(a.hu[a.hu.size() / 2]), 0.0);  // the flow moves
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.h, b.h);
+  EXPECT_EQ(a.hu, b.hu);
+  EXPECT_EQ(a.hv, b.hv);
+  const WaterBalance &wa = running.water_balance(), &wb = restarted.water_balance();
+  EXPECT_EQ(wa.initial_volume, wb.initial_volume);
+  EXPECT_EQ(wa.volume, wb.volume);
+  EXPECT_EQ(wa.outflow, wb.outflow);
+  EXPECT_EQ(wa.source, wb.source);
+  EXPECT_EQ(wa.group_outflow, wb.group_outflow);
+  EXPECT_EQ(running.solver().sub_steps().count, restarted.solver().sub_steps().count);
+  EXPECT_EQ(running.solver().sub_steps().smallest, restarted.solver().sub_steps().smallest);
+  EXPECT_EQ(running.solver().sub_steps().total, restarted.solver().sub_steps().total);
+}
+
+TEST(FvEngine, RestoreOfAnotherMeshIsAnInputError) {
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 10, 4, true});
+  const Mesh other = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 5, 2, true});
+  const Case c = test::closed_basin_case(1.0);
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  const std::string path = test::scratch_path("fv_engine_other_mesh.bin").string();
+  {
+    ArchiveWriter w(path);
+    engine.save(w, "flow");
+    w.close();
+  }
+  FvEngine smaller(other, c);
+  smaller.initialize();
+  ArchiveReader r(path);
+  EXPECT_THROW(smaller.restore(r, "flow"), InputError);
+}
+
+TEST(FvEngine, NodalStateOfALakeAtRestIsItsLevel) {
+  // An island: vertices among wet cells show the lake's level, vertices with only dry cells
+  // around show the bed, and no node moves.
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 10, 4, true});
+  Case c = test::closed_basin_case(1.0);
+  c.bed.kind = BedConfig::Kind::expression;
+  c.bed.expression = Expression("1.5 - 0.2*((x-5)^2 + (y-2)^2)", "test: bed.expression");
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  engine.step(0.5);
+  const FiniteVolumeSolver& s = engine.solver();
+  const CellMesh& cells = s.cells();
+  std::vector<int> wet(mesh.node_count(), 0);
+  for (int i = 0; i < cells.cell_count; ++i)
+    if (s.state().h[i] > s.dry_depth())
+      for (int k : cells.corners[i]) wet[k] = 1;
+  const FlowState& nodal = engine.nodal_state();
+  ASSERT_EQ(static_cast<int>(nodal.eta.size()), mesh.vertex_count);
+  int wet_vertices = 0, dry_vertices = 0;
+  for (int k = 0; k < mesh.vertex_count; ++k) {
+    const Vec2& x = mesh.nodes[k];
+    const double z = 1.5 - 0.2 * ((x.x() - 5) * (x.x() - 5) + (x.y() - 2) * (x.y() - 2));
+    if (wet[k]) {
+      ++wet_vertices;
+      EXPECT_NEAR(nodal.eta[k], 1.0, 1e-13) << "vertex " << k;
+    } else {
+      ++dry_vertices;
+      EXPECT_NEAR(nodal.eta[k], z, 1e-13) << "vertex " << k;
+    }
+  }
+  EXPECT_GT(wet_vertices, 0);
+  EXPECT_GT(dry_vertices, 0);
+  for (int k = 0; k < mesh.node_count(); ++k) {
+    EXPECT_LE(std::abs(nodal.u[k]), 1e-12) << "node " << k;
+    EXPECT_LE(std::abs(nodal.v[k]), 1e-12) << "node " << k;
+  }
+  EXPECT_EQ(nodal.time, 0.5);
+}
+
+}  // namespace
+}  // namespace flotsam
