@@ -62,8 +62,6 @@ void check_body_placement(const BodySpec& spec, const FlowField& flow, double t,
       fail(fmt::format("corner ({}, {}) is outside the domain (overlapping a pier or a bank)",
                        corner.x(), corner.y()));
   }
-  if (at_G.H < check.dry_depth)
-    fail(fmt::format("on a dry point: depth {} m < dry depth {} m", at_G.H, check.dry_depth));
 }
 
 int add_explicit_bodies(BodySet& bodies, const std::vector<BodySpec>& specs, const FlowField& flow,

@@ -6,8 +6,9 @@
 // Every body is checked where it is placed; a bad one is an InputError naming it:
 //   * a non-positive length, width, height or density, or a width larger than the length;
 //   * its centre or a corner outside the domain ("overlapping a pier" is the same: a pier is a
-//     hole in the mesh);
-//   * its centre on a dry point (H < dry depth).
+//     hole in the mesh).
+// A body may start on a dry point (a log on a floodplain, finite-volume engine): it rests on the
+// bed, grounded (spec 3.4), until water lifts or drags it.
 #include <cstdint>
 #include <random>
 #include <string>
@@ -19,10 +20,9 @@
 
 namespace flotsam {
 
-/// Where bodies are checked: the case file for messages, and the dry depth.
+/// Where bodies are checked: the case file for messages.
 struct PlacementCheck {
-  std::string source;       // the case file ("" when built in code)
-  double dry_depth = 1e-3;  // H_dry [m] (spec 1.5)
+  std::string source;  // the case file ("" when built in code)
 };
 
 /// Checks the explicit bodies against the flow at time t and appends them; returns the index

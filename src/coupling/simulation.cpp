@@ -37,7 +37,7 @@ void Simulation::initialize() {
   }
   if (has_bodies_) {
     bodies_.water_density = case_.flow.water_density;
-    const PlacementCheck check{case_.file, case_.flow.dry_depth};
+    const PlacementCheck check{case_.file};
     if (!options_.restart)  // a restart takes its bodies from the checkpoint
       add_explicit_bodies(bodies_, case_.bodies.bodies, flow_->field(), time_, check);
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
