@@ -71,8 +71,8 @@ void Simulation::read_checkpoint(const std::string& path) {
     contacts_->restore(std::move(last), std::move(order), r.read_value<int>("contacts.sweep_axis"));
   }
   if (options_.write_output)
-    output_ =
-        std::make_unique<RunOutput>(output_directory(), case_.name, output_times, has_bodies_);
+    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_groups(),
+                                          output_times, has_bodies_);
 }
 
 }  // namespace flotsam

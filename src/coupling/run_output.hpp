@@ -4,7 +4,8 @@
 //   <name>_bodies.pvd + bodies_NNNNNN.vtp bodies (when the case has any)
 //   boundary.vtp                          the boundary with its groups, once
 //   <name>_bodies.csv                     every body at every output time (trajectories)
-//   <name>_balance.csv                    water volume balance at every output time
+//   <name>_balance.csv                    water volume balance at every output time, with the
+//                                         volume out through each open boundary group
 //   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
 //   run.bin + state_NNNNNN.bin            the mesh once, the state at every output, for
 //                                         `flotsam render` (io/run_state.hpp)
@@ -30,8 +31,9 @@ class RunOutput {
   /// Continues the output of a run in `directory` (a restart): the indexes list again the
   /// `times` already written, the tables get their rows appended, and the next output is
   /// number times.size().
-  RunOutput(const std::filesystem::path& directory, const std::string& name,
-            const std::vector<double>& times, bool with_bodies);
+  RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
+            const std::vector<std::uint8_t>& open_group, const std::vector<double>& times,
+            bool with_bodies);
 
   /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
   /// stays at its steady state's).
@@ -49,9 +51,11 @@ class RunOutput {
 
  private:
   void write_bodies(const BodySet& bodies, double t);
+  std::vector<std::string> open_group_names(const Mesh& mesh) const;
 
   std::filesystem::path directory_;
   std::string name_;
+  std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
   PvdWriter flow_index_, body_index_;
   std::vector<double> times_;  // [s] of each output written, in order
   bool append_ = false;        // tables continue files of an earlier run (restart)

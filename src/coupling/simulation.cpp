@@ -69,14 +69,18 @@ void Simulation::initialize() {
     return;
   }
   if (options_.write_output) {
-    std::vector<std::uint8_t> open_group(mesh_.group_names.size(), 0);
-    for (int g : outflow_groups_) open_group[g] = 1;
-    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_group,
+    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_groups(),
                                           options_.overwrite || case_.output.overwrite, case_.file);
   }
   open_probes(false);
   if (probes_) probes_->write(time_);
   write_output_if_due(false);
+}
+
+std::vector<std::uint8_t> Simulation::open_groups() const {
+  std::vector<std::uint8_t> open(mesh_.group_names.size(), 0);
+  for (int g : outflow_groups_) open[g] = 1;
+  return open;
 }
 
 void Simulation::open_probes(bool append) {

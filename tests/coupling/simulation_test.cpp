@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "../support/scratch_path.hpp"
 #include "../support/straight_channel.hpp"
@@ -138,6 +139,38 @@ TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("exists and is not empty"));
   }
+  std::filesystem::remove_all(dir);
+}
+
+// The balance table carries the volume out through each open group: in the unsteady channel
+// (discharge Q in at the left, elevation held at the right) the left's column is -Q t exactly
+// (the discharge is imposed), and the groups' columns add up to the total outflow.
+TEST(Simulation, BalanceTableHasTheOutflowOfEachOpenGroup) {
+  const auto dir = test::fresh_test_folder("flotsam_simulation_test");
+  Case c = channel_case(CouplingMode::one_way);
+  c.bodies.bodies.clear();
+  c.time.end = 10.0;
+  c.output.interval = 5.0;
+  {
+    Simulation s(
+        c, channel_mesh(),
+        {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+    s.run();
+  }
+  std::ifstream csv(dir / "channel_balance.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "t [s],volume [m^3],outflow [m^3],balance error [m^3],relative error [-],"
+            "outflow left [m^3],outflow right [m^3]");
+  while (std::getline(csv, line)) last = line;
+  std::vector<double> row;
+  std::stringstream fields(last);
+  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  ASSERT_EQ(row.size(), 7u);
+  EXPECT_EQ(row[0], 10.0);
+  EXPECT_NEAR(row[5], -Q * 10.0, 1e-6 * Q * 10.0);        // CSV precision: 9 digits
+  EXPECT_NEAR(row[5] + row[6], row[2], 1e-6 * Q * 10.0);  // the total
   std::filesystem::remove_all(dir);
 }
 
