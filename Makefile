@@ -56,24 +56,34 @@ demo: build
 	$(BUILD)/flotsam run examples/bridge_piers.yaml --overwrite
 	$(BUILD)/flotsam render out/bridge_piers
 
-# Benchmarks: the Google Benchmark programs in bench/, the flow engine's timed harness (about 4
-# minutes, most of it the hour of the paper's channel), then the two timed runs of issue 6
-# (results under build/bench_runs/, replaced each time). Figures go to docs/performance.md.
+# Benchmarks: the Google Benchmark programs in bench/, the flow engines' timed harnesses (about 5
+# minutes, most of it the FEM's hour of the paper's channel), then timed runs of the examples, the
+# two bridge cases also with the finite-volume engine (results under build/bench_runs/, replaced
+# each time). Figures go to docs/performance.md.
 bench: build
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	@for b in $(BUILD)/bench/bench_*; do \
-	    if [ $$b = $(BUILD)/bench/bench_flow_channel ]; then continue; fi; \
+	    case $$b in */bench_flow_channel|*/bench_fv_dam_break) continue;; esac; \
 	    echo "== $$b"; $$b --benchmark_min_time=0.5; done
-	@echo "== flow engine (docs/performance.md): time per step, steady mode at Re = 20 and at the"
+	@echo "== FEM engine (docs/performance.md): time per step, steady mode at Re = 20 and at the"
 	@echo "   case's Re = 1000 with the paper's mixing length, 1 h at dt = 1 s"
 	$(BUILD)/bench/bench_flow_channel scaling 14.5 40 1
 	$(BUILD)/bench/bench_flow_channel steady 0 1.5
 	FLOTSAM_FLOW_TURBULENCE=mixing-length $(BUILD)/bench/bench_flow_channel steady
 	$(BUILD)/bench/bench_flow_channel unsteady 1 3600
-	@for c in bridge_piers bridge_flood; do echo "== flotsam run examples/$$c.yaml"; \
-	    /usr/bin/time -f "$$c: %e s wall, %U s user, %M KiB peak" \
-	    $(BUILD)/flotsam run examples/$$c.yaml -o $(BUILD)/bench_runs/$$c --overwrite -q \
-	    | grep -E "simulated|wall time"; done
+	@echo "== finite-volume engine: triangle-steps per second at 50k, 500k and 2M triangles"
+	OMP_WAIT_POLICY=PASSIVE $(BUILD)/bench/bench_fv_dam_break
+	@mkdir -p $(BUILD)/bench_runs
+	@for c in bridge_piers bridge_flood; do \
+	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/' examples/$$c.yaml \
+	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
+	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \
+	          $(BUILD)/bench_runs/bridge_piers_fv.yaml $(BUILD)/bench_runs/bridge_flood_fv.yaml \
+	          examples/dam_break_valley.yaml; do \
+	    n=$$(basename $$c .yaml); echo "== flotsam run $$c"; \
+	    /usr/bin/time -f "$$n: %e s wall, %U s user, %M KiB peak" \
+	    $(BUILD)/flotsam run $$c -o $(BUILD)/bench_runs/$$n --overwrite -q \
+	    | grep -E "simulated|finite volumes|wall time"; done
 
 format: deps
 	find src tests bench -name '*.[ch]pp' | xargs clang-format -i

@@ -68,7 +68,7 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
   flow_index_.add(t, file);
   if (with_bodies) write_bodies(bodies, t);
   write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), t,
-                     flow.eta(), flow.u(), flow.v(), bodies, jammed);
+                     flow.eta(), flow.u(), flow.v(), flow.wet_nodes(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
   std::vector<double> row = {t, b.volume, b.outflow, b.error(), b.relative_error()};
   for (std::size_t g = 0; g < open_group_.size(); ++g)

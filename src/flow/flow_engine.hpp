@@ -4,6 +4,7 @@
 // finite-volume engine for floods (flow/fv). The simulation holds one, chosen once at setup by
 // flow.engine (coupling/flow_engines.hpp), as Clawpack picks a Riemann solver, and never asks
 // which it holds.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,8 @@ class FlowEngine {
   /// the finite-volume engine averages its cells around each node). For pictures, backwater
   /// sections and probes of the whole field.
   virtual const FlowState& nodal_state() const = 0;
+  /// Per mesh node: 1 wet, 0 dry (pictures draw dry ground as land); empty: all wet (the FEM).
+  virtual std::vector<std::uint8_t> wet_nodes() const { return {}; }
   virtual const WaterBalance& water_balance() const = 0;
   virtual double volume() const = 0;  // [m^3]
   virtual const Mesh& mesh() const = 0;

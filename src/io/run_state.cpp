@@ -60,12 +60,14 @@ RunDescription read_run_description(const std::string& path) {
 
 void write_run_snapshot(const std::string& path, double time, const std::vector<double>& eta,
                         const std::vector<double>& u, const std::vector<double>& v,
-                        const BodySet& bodies, const std::vector<std::uint8_t>& jammed) {
+                        const std::vector<std::uint8_t>& wet, const BodySet& bodies,
+                        const std::vector<std::uint8_t>& jammed) {
   ArchiveWriter w(path);
   w.write_value("time", time);
   w.write("eta", eta);
   w.write("u", u);
   w.write("v", v);
+  w.write("wet", wet);
   w.write("bodies.id", bodies.id);
   w.write("bodies.position", bodies.position);
   w.write("bodies.angle", bodies.angle);
@@ -83,6 +85,7 @@ RunSnapshot read_run_snapshot(const std::string& path) {
   s.eta = r.read<double>("eta");
   s.u = r.read<double>("u");
   s.v = r.read<double>("v");
+  s.wet = r.read<std::uint8_t>("wet");
   s.id = r.read<long>("bodies.id");
   s.position = r.read<Vec2>("bodies.position");
   s.angle = r.read<double>("bodies.angle");

@@ -21,9 +21,10 @@ struct RunDescription {
 
 /// One output time of a run.
 struct RunSnapshot {
-  double time = 0.0;         // [s]
-  std::vector<double> eta;   // [m] per vertex (P1)
-  std::vector<double> u, v;  // [m/s] per P2 node
+  double time = 0.0;              // [s]
+  std::vector<double> eta;        // [m] per vertex (P1)
+  std::vector<double> u, v;       // [m/s] per P2 node
+  std::vector<std::uint8_t> wet;  // per P2 node: 1 wet, 0 dry; empty: all wet
   // Bodies (all, including gone ones), as BodySet.
   std::vector<long> id;
   std::vector<Vec2> position;         // [m]
@@ -36,10 +37,12 @@ struct RunSnapshot {
 void write_run_description(const std::string& path, const RunDescription& run);
 RunDescription read_run_description(const std::string& path);
 
-/// `jammed` has one flag per body (or is empty: none).
+/// `wet` has one flag per P2 node (or is empty: all wet); `jammed` one per body (or is empty:
+/// none).
 void write_run_snapshot(const std::string& path, double time, const std::vector<double>& eta,
                         const std::vector<double>& u, const std::vector<double>& v,
-                        const BodySet& bodies, const std::vector<std::uint8_t>& jammed);
+                        const std::vector<std::uint8_t>& wet, const BodySet& bodies,
+                        const std::vector<std::uint8_t>& jammed);
 RunSnapshot read_run_snapshot(const std::string& path);
 
 }  // namespace flotsam

@@ -76,6 +76,8 @@ void draw_field(const Scene& scene, const FrameLayout& layout, double min, doubl
   ElementPaint paint{
       scene, layout, min,
       max,   image,  scene.field.values.size() == static_cast<std::size_t>(mesh.node_count())};
+  const std::vector<std::uint8_t>& wet = scene.wet;  // a sub-triangle dry at all three corners
+                                                     // stays land
   std::array<Vec2, 6> px;
   for (int e = 0; e < mesh.element_count(); ++e) {
     const auto& el = mesh.elements[e];
@@ -88,7 +90,8 @@ void draw_field(const Scene& scene, const FrameLayout& layout, double min, doubl
       y_hi = std::max(y_hi, p.y());
     }
     if (x_hi < box.x0 || x_lo > box.x1 || y_hi < box.y0 || y_lo > box.y1) continue;
-    for (const auto& t : Mesh::sub_triangles) paint.fill(el, px, t);
+    for (const auto& t : Mesh::sub_triangles)
+      if (wet.empty() || wet[el[t[0]]] || wet[el[t[1]]] || wet[el[t[2]]]) paint.fill(el, px, t);
   }
 }
 

@@ -66,6 +66,7 @@ Scene base_scene(const RunDescription& run, const RunSnapshot& s, const PictureO
   scene.height = o.height;
   scene.time = s.time;
   scene.bodies = bodies_of(s);
+  scene.wet = s.wet;
   for (std::uint8_t open : run.open_group)
     scene.boundary_kinds.push_back(open ? BoundaryKind::open : BoundaryKind::wall);
   return scene;

@@ -126,6 +126,10 @@ void validate_scene(const Scene& scene) {
     throw_input_error("{}: velocity has {} and {} values, expected {} each (P2) or none", what,
                       scene.u_x.size(), scene.u_y.size(), mesh.node_count());
   }
+  if (!scene.wet.empty() && scene.wet.size() != static_cast<std::size_t>(mesh.node_count())) {
+    throw_input_error("{}: {} wet flags, expected {} (one per node) or none", what,
+                      scene.wet.size(), mesh.node_count());
+  }
   if (!scene.u_x.empty() && !(scene.arrow_spacing >= 4.0)) {
     throw_input_error("{}: arrow spacing {} px, expected at least 4 px", what, scene.arrow_spacing);
   }

@@ -70,6 +70,7 @@ struct Scene {
   const Mesh* mesh = nullptr;  // must outlive the drawing
 
   ScalarField field;
+  std::vector<std::uint8_t> wet;  // per mesh node: 1 wet, 0 dry (drawn as land); empty: all wet
   ColourMapName colour_map = ColourMapName::viridis;
   ColourRange range;
 

@@ -192,6 +192,25 @@ TEST(Frame, HoleIsFilledPierGreyAndOutsideIsLand) {
   EXPECT_EQ(image.at(water.first, water.second), colour_at(ColourMapName::viridis, 0.5));
 }
 
+TEST(Frame, DryGroundIsDrawnAsLand) {
+  // Nodes at x > 2.5 m dry: the sub-triangles dry at all three corners (x >= 3 m) stay land,
+  // the wet ones show the field.
+  RampScene ramp;
+  for (const Vec2& p : ramp.mesh.nodes) ramp.scene.wet.push_back(p.x() > 2.5 ? 0 : 1);
+  const FrameLayout layout = frame_layout(ramp.scene);
+  const Image image = render_image(ramp.scene);
+  for (const double y : {0.4, 1.0, 1.7}) {
+    const auto dry = pixel_of(layout, {3.6, y});
+    EXPECT_EQ(image.at(dry.first, dry.second), land) << "y = " << y;
+    const auto wet = pixel_of(layout, {1.2, y});
+    expect_near(image.at(wet.first, wet.second),
+                colour_at(ColourMapName::viridis, centre_of(layout, wet).x() / 4.0), 1,
+                fmt::format("wet at y = {}", y));
+  }
+  ramp.scene.wet.pop_back();
+  EXPECT_THROW(render_image(ramp.scene), InputError);  // one flag per node
+}
+
 TEST(Frame, ArrowSitsOnEverySamplePointOfAUniformFlow) {
   RampScene ramp;
   ramp.scene.u_x.assign(ramp.mesh.node_count(), 1.0);  // [m/s] along +x

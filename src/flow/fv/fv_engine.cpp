@@ -115,6 +115,19 @@ const FlowState& FvEngine::nodal_state() const {
   return nodal_;
 }
 
+// A node is wet when a wet cell touches it (with cells = elements, a mid node when an end is).
+std::vector<std::uint8_t> FvEngine::wet_nodes() const {
+  const CellMesh& c = solver_.cells();
+  std::vector<std::uint8_t> wet(mesh_.node_count(), 0);
+  for (int i = 0; i < c.cell_count; ++i)
+    if (solver_.state().h[i] > solver_.dry_depth())
+      for (int k : c.corners[i]) wet[k] = 1;
+  if (c.kind == FvCells::elements)
+    for (const auto& el : mesh_.elements)
+      for (int k = 0; k < 3; ++k) wet[el[3 + k]] = wet[el[k]] | wet[el[(k + 1) % 3]];
+  return wet;
+}
+
 void FvEngine::write_fields(const std::string& path, double t) const {
   const CellMesh& c = solver_.cells();
   const ConservedState& U = solver_.state();

@@ -23,6 +23,7 @@ class FvEngine final : public FlowEngine {
   double time() const override { return solver_.time(); }
   FlowField& field() override { return *field_; }
   const FlowState& nodal_state() const override;
+  std::vector<std::uint8_t> wet_nodes() const override;
   const WaterBalance& water_balance() const override { return solver_.water_balance(); }
   double volume() const override { return solver_.volume(); }
   const Mesh& mesh() const override { return mesh_; }
