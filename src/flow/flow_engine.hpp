@@ -19,6 +19,14 @@ class ArchiveWriter;
 class ArchiveReader;
 struct TimeConfig;
 
+/// Frozen mode's march to a steady state: how far it must settle, the largest change of the
+/// velocity in one step over the largest velocity [-].
+constexpr double settled_change = 1e-5;
+
+/// The end of such a march at time t [s] with that `change` [-]: logged when it settled, else a
+/// RunError telling the user to march longer (time.spin_up_end).
+void finish_march(double change, double t);
+
 class FlowEngine {
  public:
   virtual ~FlowEngine() = default;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../../support/scratch_path.hpp"
+#include "core/error.hpp"
 #include "flow/fv/fv_engine.hpp"
 #include "fv_test_cases.hpp"
 #include "io/binary_archive.hpp"
@@ -122,6 +123,44 @@ TEST(FvEngine, NodalStateOfALakeAtRestIsItsLevel) {
     EXPECT_LE(std::abs(nodal.v[k]), 1e-12) << "node " << k;
   }
   EXPECT_EQ(nodal.time, 0.5);
+}
+
+// Frozen mode (FlowEngine::settle): a frictionless channel fed Q at the left, the level held at
+// H0 at the right, marched from still water until the velocity settles; its steady state is the
+// uniform flow U = Q / (W H0) (the discharge ghost and the interior fluxes then agree exactly),
+// and that state becomes t = 0 with the balance restarted.
+TEST(FvEngine, SettleMarchesToTheUniformFlow) {
+  const double W = 4.0, H0 = 1.0, Q = 2.0, U = Q / (W * H0);  // [m], [m], [m^3/s], [m/s]
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 20.0, W, 10, 2, true});
+  Case c = test::closed_basin_case(H0);
+  test::condition_of(c, "left") = {BoundaryCondition::Kind::discharge, "left", TimeSeries(Q),
+                                   TimeSeries(0.0)};
+  test::condition_of(c, "right") = {BoundaryCondition::Kind::elevation, "right", TimeSeries(H0),
+                                    TimeSeries(0.0)};
+  c.time.spin_up_step = 5.0;
+  c.time.spin_up_end = 3000.0;
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  engine.settle(c.time);
+  EXPECT_EQ(engine.time(), 0.0);
+  EXPECT_EQ(engine.water_balance().outflow, 0.0);
+  EXPECT_EQ(engine.water_balance().initial_volume, engine.volume());
+  const ConservedState& s = engine.solver().state();
+  for (std::size_t i = 0; i < s.h.size(); ++i) {
+    ASSERT_NEAR(s.h[i], H0, 1e-3 * H0) << "cell " << i;
+    ASSERT_NEAR(s.hu[i] / s.h[i], U, 1e-3 * U) << "cell " << i;
+    ASSERT_NEAR(s.hv[i] / s.h[i], 0.0, 1e-3 * U) << "cell " << i;
+  }
+  // Marching too briefly is a RunError that says so.
+  c.time.spin_up_end = 5.0;
+  FvEngine brief(mesh, c);
+  brief.initialize();
+  try {
+    brief.settle(c.time);
+    FAIL() << "a march of one step settled";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("time.spin_up_end"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
