@@ -34,9 +34,19 @@ FaceState ghost_state(const BoundaryCondition& bc, const FaceState& inside, cons
       ghost.v -= 2.0 * u_n * n.y();
       break;
     }
-    case Kind::elevation:
+    case Kind::elevation: {
+      // The level is imposed; the normal velocity follows from the characteristic that leaves
+      // the domain, u_n + 2 c constant along it (subcritical): u_n,g = u_n + 2 (c - c_g).
+      // A supercritical outflow takes no condition: the inside state leaves as it is.
+      const double c = std::sqrt(g * inside.h);
+      const double u_n = inside.u * n.x() + inside.v * n.y();
+      if (u_n >= c && inside.h > 0.0) break;
       ghost.h = std::max(0.0, bc.value(t) - inside.z);
+      const double u_n_ghost = u_n + 2.0 * (c - std::sqrt(g * ghost.h));
+      ghost.u += (u_n_ghost - u_n) * n.x();
+      ghost.v += (u_n_ghost - u_n) * n.y();
       break;
+    }
     case Kind::discharge: {
       const double h_critical = std::cbrt(q * q / g);  // [m]
       ghost.h = std::max(inside.h, h_critical);

@@ -5,8 +5,10 @@
 //
 //   wall, noslip: the inside state mirrored, u_n -> -u_n (no mass crosses: the flux's mass part
 //                 is set to exactly 0); a frictionless wall, as the engine has no viscosity
-//   elevation:    h_g = max(0, eta_b(t) - z_e), velocity of the inside (subcritical inflow or
-//                 outflow at a given level)
+//   elevation:    h_g = max(0, eta_b(t) - z_e), the normal velocity from the outgoing Riemann
+//                 invariant u_n + 2 c of the inside, the tangential one the inside's (a
+//                 subcritical inflow or outflow at a given level); a supercritical outflow
+//                 leaves as it is
 //   discharge:    the group's Q(t) [m^3/s] shared along it as q_e = Q h_e^{3/2} / sum(l h^{3/2})
 //                 (spec 1.4; by length when the group is dry), entering along the inward normal
 //                 with h_g = max(h_e, (q_e^2 / g)^{1/3}) (at least critical: onto a dry bed the

@@ -37,13 +37,32 @@ TEST(FvBoundary, WallMirrorsTheNormalVelocityAndKeepsTheTangent) {
   }
 }
 
-TEST(FvBoundary, ElevationSetsTheDepthFromTheLevelAndKeepsTheVelocity) {
-  // eta_b(t) from 1.0 at t = 0 to 2.0 at t = 10 s: at t = 5 s, 1.5 m, so h = 1.5 - 0.3.
+TEST(FvBoundary, ElevationSetsTheDepthAndKeepsTheOutgoingRiemannInvariant) {
+  // eta_b(t) from 1.0 at t = 0 to 2.0 at t = 10 s: at t = 5 s, 1.5 m, so h = 1.5 - 0.3 = 1.2 m.
+  // The characteristic leaving the domain carries u_n + 2 c: the ghost's equals the inside's;
+  // the tangential velocity is the inside's.
   const BoundaryCondition bc = condition(Kind::elevation, TimeSeries({{0.0, 1.0}, {10.0, 2.0}}));
-  const FaceState ghost = ghost_state(bc, inside, n, 5.0, 0.0, g);
+  FaceState lower = inside;
+  lower.h = 0.8;  // below the boundary's level: water is pushed in
+  const FaceState ghost = ghost_state(bc, lower, n, 5.0, 0.0, g);
   EXPECT_NEAR(ghost.h, 1.2, 1e-15);
-  EXPECT_EQ(ghost.u, inside.u);
-  EXPECT_EQ(ghost.v, inside.v);
+  const double invariant = velocity(lower).dot(n) + 2.0 * std::sqrt(g * lower.h);
+  EXPECT_NEAR(velocity(ghost).dot(n) + 2.0 * std::sqrt(g * ghost.h), invariant, 1e-14);
+  EXPECT_LT(velocity(ghost).dot(n), velocity(lower).dot(n));  // a higher level outside: inflow
+  EXPECT_NEAR(velocity(ghost).dot(perp(n)), velocity(lower).dot(perp(n)), 1e-15);
+  // At the boundary's own level the ghost is the inside state.
+  const FaceState level =
+      ghost_state(condition(Kind::elevation, TimeSeries(1.5)), inside, n, 0.0, 0.0, g);
+  EXPECT_NEAR(level.h, inside.h, 1e-15);
+  EXPECT_NEAR(level.u, inside.u, 1e-14);
+  EXPECT_NEAR(level.v, inside.v, 1e-14);
+  // A supercritical outflow takes no condition: the inside state leaves as it is.
+  FaceState fast = inside;
+  fast.u = 6.0 * n.x(), fast.v = 6.0 * n.y();  // 6 m/s > c = 3.43 m/s
+  const FaceState out = ghost_state(bc, fast, n, 5.0, 0.0, g);
+  EXPECT_EQ(out.h, fast.h);
+  EXPECT_EQ(out.u, fast.u);
+  EXPECT_EQ(out.v, fast.v);
   // A level below the bed: dry ghost.
   const FaceState dry =
       ghost_state(condition(Kind::elevation, TimeSeries(0.1)), inside, n, 0.0, 0.0, g);
