@@ -44,6 +44,7 @@ class FlowEngine {
   /// What bodies sample (states of the current step interpolated in time) and where their
   /// reactions go (two-way).
   virtual FlowField& field() = 0;
+  const FlowField& field() const { return const_cast<FlowEngine*>(this)->field(); }
   /// The flow on the mesh's nodes: eta per vertex, u and v per P2 node (the FEM's own unknowns;
   /// the finite-volume engine averages its cells around each node). For pictures, backwater
   /// sections and probes of the whole field.

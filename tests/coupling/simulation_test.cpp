@@ -174,5 +174,45 @@ TEST(Simulation, BalanceTableHasTheOutflowOfEachOpenGroup) {
   std::filesystem::remove_all(dir);
 }
 
+// Gauges (output.probes) on a run of the finite-volume engine: a row at t = 0 and at every
+// coupling step, and the last row is what the engine's field gives at the probe at the end (to
+// the CSV's 9 digits).
+TEST(Simulation, ProbesWriteARowPerStepWithTheEnginesValues) {
+  const auto dir = test::fresh_test_folder("flotsam_simulation_test");
+  Case c = channel_case(CouplingMode::one_way);
+  c.bodies.bodies.clear();
+  c.flow.engine = FlowEngineKind::fv;
+  c.time.end = 5.0;
+  c.output.probes = {{"mid", Vec2(100.0, 10.0), 0}, {"inlet", Vec2(5.0, 3.0), 0}};
+  Simulation s(
+      c, channel_mesh(),
+      {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+  s.run();
+  std::ifstream csv(dir / "channel_probes.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "t [s],mid_eta [m],mid_H [m],mid_u [m/s],mid_v [m/s],inlet_eta [m],inlet_H [m],"
+            "inlet_u [m/s],inlet_v [m/s]");
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows, last = line;
+  EXPECT_EQ(rows, 6);  // t = 0, 1, ..., 5
+  std::vector<double> row;
+  std::stringstream fields(last);
+  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  ASSERT_EQ(row.size(), 9u);
+  EXPECT_EQ(row[0], 5.0);
+  const FlowEngine& flow = s.flow();
+  for (int k = 0; k < 2; ++k) {
+    int hint = -1;
+    const FlowSample at = flow.field().sample(c.output.probes[k].position, 5.0, hint);
+    EXPECT_NEAR(row[1 + 4 * k], at.eta, 1e-8 * std::abs(at.eta)) << c.output.probes[k].name;
+    EXPECT_NEAR(row[2 + 4 * k], at.H, 1e-8 * at.H) << c.output.probes[k].name;
+    EXPECT_NEAR(row[3 + 4 * k], at.u.x(), 1e-8 + 1e-8 * std::abs(at.u.x()));
+  }
+  EXPECT_GT(row[7], 0.5);  // the inflow has reached the inlet's gauge
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace flotsam
