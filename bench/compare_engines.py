@@ -8,7 +8,8 @@ bridge.
     python3 bench/compare_engines.py BUILD_DIR OUT_DIR [RUN ...]
 
 RUN names one of the runs below (default: all; `fem_0.1` alone takes about 35 minutes on this
-machine, `fv_split_fine` about 30). Runs whose results are already in OUT_DIR are not run again.
+machine, the others a few minutes each). Runs whose results are already in OUT_DIR are not run
+again.
 """
 import csv
 import os
@@ -21,7 +22,7 @@ RUNS = {
     "fem_0.1": ("fem", 0.1, None, 14.5, 4.0),
     "fv_elements": ("fv", 1.0, "elements", 14.5, 4.0),
     "fv_split": ("fv", 1.0, "split", 14.5, 4.0),
-    "fv_split_fine": ("fv", 1.0, "split", 7.25, 2.0),
+    "fv_fine": ("fv", 1.0, "elements", 7.25, 2.0),
 }
 GAUGES = [(f"b{b}_{k}", x, y) for b, x in ((1, 550.0), (2, 850.0))
           for k, y in enumerate((10.0, 42.5, 85.0, 127.5))]

@@ -121,7 +121,7 @@ double FiniteVolumeSolver::wet_fraction() const {
 
 // ---- the finite-volume operator L -------------------------------------------------------
 
-void FiniteVolumeSolver::load_cells(const ConservedState& U) {
+void FiniteVolumeSolver::load_cells(const ConservedState& U) const {
   const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < cells_.cell_count; ++i) {
@@ -134,7 +134,7 @@ void FiniteVolumeSolver::load_cells(const ConservedState& U) {
 }
 
 void FiniteVolumeSolver::fill_field(CellField& field) const {
-  const_cast<FiniteVolumeSolver*>(this)->load_cells(U_);  // field_ is scratch
+  load_cells(U_);
   field = field_;
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field);
 }
@@ -144,7 +144,7 @@ void FiniteVolumeSolver::fill_field(CellField& field) const {
 //   z* = max(z_L, z_R),   h*_L = max(0, h_L + z_L - z*),   h*_R = max(0, h_R + z_R - z*),
 // the HLLC flux between (h*_L, u_L) and (h*_R, u_R), and each side's correction
 // g/2 (h_side^2 - h*_side^2) that keeps a lake at rest at rest.
-void FiniteVolumeSolver::compute_edge_fluxes(double t) {
+void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
   const CellMesh& c = cells_;
   const auto& conditions = case_.flow.boundaries;
   // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry).
@@ -207,7 +207,7 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) {
 //   - sum_k l_k g/2 (h_k + h_i)(z_k - z_i) n_k     (h_k, z_k: the cell's own edge values),
 // and Coriolis f (hv, -hu), wind, body reactions; divided by the area. The largest wave speed
 // at its edges gives its Courant step (model.md (M-16)).
-void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) {
+void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
   const CellMesh& c = cells_;
   const double g = g_, f_c = coriolis_, rho = case_.flow.water_density;
   const bool forces = !cell_force_.empty();
@@ -246,7 +246,7 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) {
   stage_courant_step_ = case_.flow.fv.courant * dt_min;
 }
 
-void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) {
+void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
   load_cells(U);
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
   compute_edge_fluxes(t);
@@ -272,19 +272,8 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
 
 // ---- stepping -----------------------------------------------------------------------------
 
-double FiniteVolumeSolver::courant_step(int* cell) const {
-  auto* self = const_cast<FiniteVolumeSolver*>(this);  // the operator's scratch arrays
-  self->evaluate(U_, U_.time);
-  if (cell) {
-    const CellMesh& c = cells_;
-    double best = std::numeric_limits<double>::infinity();
-    *cell = -1;
-    for (int i = 0; i < c.cell_count; ++i)
-      for (int k = 0; k < 3; ++k) {
-        const double s = edge_speed_[c.cell_edges[i][k]];
-        if (s > 0.0 && c.length_scale[i] / s < best) best = c.length_scale[i] / s, *cell = i;
-      }
-  }
+double FiniteVolumeSolver::courant_step() const {
+  evaluate(U_, U_.time);
   return stage_courant_step_;
 }
 

@@ -72,21 +72,20 @@ class FiniteVolumeSolver {
   void restart_water_balance();
   const SubStepStats& sub_steps() const { return stats_; }
   void restore_sub_steps(const SubStepStats& s) { stats_ = s; }
-  /// The largest stable step [s] of the current state (infinite when all is dry and still), and
-  /// the cell that sets it.
-  double courant_step(int* cell = nullptr) const;
+  /// The Courant step [s] of the current state (M-16) (infinite when all is dry and still).
+  double courant_step() const;
   double wet_fraction() const;                     // [-] of the cells' area
   double dry_depth() const { return dry_depth_; }  // [m]
 
  private:
   /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
-  void evaluate(const ConservedState& U, double t);
-  void compute_edge_fluxes(double t);
-  void sum_cell_rates(const ConservedState& U);
+  void evaluate(const ConservedState& U, double t) const;
+  void compute_edge_fluxes(double t) const;
+  void sum_cell_rates(const ConservedState& U) const;
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
-  void load_cells(const ConservedState& U);  // desingularised velocities into field_
+  void load_cells(const ConservedState& U) const;  // desingularised velocities into field_
   int clamp_round_off(ConservedState& U, double weight);
   [[noreturn]] void fail_at(const ConservedState& U, int cell, double t) const;
   void check(const ConservedState& U) const;
@@ -104,16 +103,18 @@ class FiniteVolumeSolver {
 
   std::vector<double> z_;  // [m] bed per cell: the mean of its corners
   ConservedState U_, U1_;
-  CellField field_;               // the stage's reconstruction
+  // Scratch of the operator L (mutable: evaluating L, as courant_step does, changes no state).
+  mutable CellField field_;       // the stage's reconstruction
   std::vector<Vec2> cell_force_;  // [N] body reactions
   // Per edge: flux through it along its normal (mass [m^2/s], momentum [m^3/s^2]), and the
   // hydrostatic corrections g/2 (h_e^2 - h*_e^2) of its two sides [m^3/s^2].
-  std::vector<double> flux_mass_, flux_x_, flux_y_, side_left_, side_right_;
-  std::vector<double> edge_speed_;      // [m/s] largest wave speed of the edge's Riemann problem
-  std::vector<double> edge_discharge_;  // [m^2/s] share q_e of a discharge condition
-  double stage_courant_step_ = 0.0;     // [s] of the last evaluation of L
-  std::vector<double> rate_h_, rate_hu_, rate_hv_;  // dU/dt per cell
-  std::vector<double> outflow_rate_;                // [m^3/s] per mesh group, this stage
+  mutable std::vector<double> flux_mass_, flux_x_, flux_y_, side_left_, side_right_;
+  mutable std::vector<double>
+      edge_speed_;  // [m/s] largest wave speed of the edge's Riemann problem
+  mutable std::vector<double> edge_discharge_;  // [m^2/s] share q_e of a discharge condition
+  mutable double stage_courant_step_ = 0.0;     // [s] of the last evaluation of L
+  mutable std::vector<double> rate_h_, rate_hu_, rate_hv_;  // dU/dt per cell
+  mutable std::vector<double> outflow_rate_;                // [m^3/s] per mesh group, this stage
   WaterBalance balance_;
   SubStepStats stats_;
 };
