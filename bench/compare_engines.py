@@ -72,12 +72,20 @@ def rows(path):
 
 def summarise(out_dir, name):
     balance = rows(os.path.join(out_dir, name, f"{name}_balance.csv"))
-    at = {r["t [s]"]: r for r in balance}
-    q_in = -(at[T_END]["outflow inflow [m^3]"] - at[T_END - WINDOW]["outflow inflow [m^3]"]) / WINDOW
+    # the output rows nearest the window's ends (a step of 0.1 s puts them at 2400.1 s)
+    start = min(balance, key=lambda r: abs(r["t [s]"] - (T_END - WINDOW)))
+    end = min(balance, key=lambda r: abs(r["t [s]"] - T_END))
+    q_in = -(end["outflow inflow [m^3]"] - start["outflow inflow [m^3]"]) / (
+        end["t [s]"] - start["t [s]"])
     probes = [r for r in rows(os.path.join(out_dir, name, f"{name}_probes.csv"))
               if r["t [s]"] > T_END - WINDOW]
     eta = {g: sum(r[f"{g}_eta [m]"] for r in probes) / len(probes) for g, _, _ in GAUGES}
     return q_in, eta
+
+
+def finished(out_dir, name):
+    path = os.path.join(out_dir, name, f"{name}_probes.csv")
+    return os.path.exists(path) and rows(path)[-1]["t [s]"] >= T_END
 
 
 def main():
@@ -85,13 +93,13 @@ def main():
     names = sys.argv[3:] or list(RUNS)
     os.makedirs(out_dir, exist_ok=True)
     for name in names:
-        if not os.path.exists(os.path.join(out_dir, name, f"{name}_probes.csv")):
+        if not finished(out_dir, name):
             case = os.path.join(out_dir, f"{name}.yaml")
             with open(case, "w") as f:
                 f.write(case_text(name, *RUNS[name]))
             subprocess.run([os.path.join(build, "flotsam"), "run", case, "-o",
                             os.path.join(out_dir, name), "--overwrite", "-q"], check=True)
-    done = [n for n in RUNS if os.path.exists(os.path.join(out_dir, n, f"{n}_probes.csv"))]
+    done = [n for n in RUNS if finished(out_dir, n)]
     results = {n: summarise(out_dir, n) for n in done}
     print("run            Q_in [m^3/s]  " + "  ".join(g for g, _, _ in GAUGES))
     for n in done:
