@@ -34,7 +34,8 @@ bool far_from_walls(const Vec2& p) {
 TEST(FvSources, WindPushesTheWaterByItsStressOverOneSubStep) {
   Case c = test::closed_basin_case(2.0);
   c.flow.wind = Vec2(12.0, -5.0);  // [m/s]
-  FiniteVolumeSolver s(basin(), c);
+  const Mesh mesh = basin();       // the solver keeps a reference to it
+  FiniteVolumeSolver s(mesh, c);
   s.initialize();
   const double dt = 0.5 * s.courant_step();  // [s] one sub-step
   s.advance(dt);
@@ -57,7 +58,8 @@ TEST(FvSources, CoriolisTurnsTheFlowAsHeunsStepOfTheRotation) {
   c.flow.initial_u = Expression("0.8", "test: flow.initial.u");
   c.flow.coriolis = true;
   c.flow.latitude_deg = latitude;
-  FiniteVolumeSolver s(basin(), c);
+  const Mesh mesh = basin();  // the solver keeps a reference to it
+  FiniteVolumeSolver s(mesh, c);
   s.initialize();
   const double dt = 0.5 * s.courant_step();
   s.advance(dt);
