@@ -69,7 +69,8 @@ void FvEngine::settle(const TimeConfig& time) {
 }
 
 // Each corner of a cell takes the area-weighted mean of the wet cells around it (the bed and no
-// velocity where all are dry); with cells = elements, a mid node the mean of its edge's ends.
+// velocity where all are dry: the node is dry); with cells = elements, a mid node the mean of
+// its edge's ends (wet when either is).
 const FlowState& FvEngine::nodal_state() const {
   if (nodal_valid_) return nodal_;
   const CellMesh& c = solver_.cells();
@@ -91,8 +92,10 @@ const FlowState& FvEngine::nodal_state() const {
   nodal_.eta.resize(mesh_.vertex_count);
   nodal_.u.resize(nodes);
   nodal_.v.resize(nodes);
+  nodal_wet_.resize(nodes);
   for (int k = 0; k < nodes; ++k) {
     const bool wet = weight[k] > 0.0;
+    nodal_wet_[k] = wet;
     if (k < mesh_.vertex_count) nodal_.eta[k] = wet ? eta[k] / weight[k] : z[k];
     nodal_.u[k] = wet ? u[k] / weight[k] : 0.0;
     nodal_.v[k] = wet ? v[k] / weight[k] : 0.0;
@@ -103,22 +106,15 @@ const FlowState& FvEngine::nodal_state() const {
         const int a = el[k], b = el[(k + 1) % 3], mid = el[3 + k];
         nodal_.u[mid] = 0.5 * (nodal_.u[a] + nodal_.u[b]);
         nodal_.v[mid] = 0.5 * (nodal_.v[a] + nodal_.v[b]);
+        nodal_wet_[mid] = nodal_wet_[a] | nodal_wet_[b];
       }
   nodal_valid_ = true;
   return nodal_;
 }
 
-// A node is wet when a wet cell touches it (with cells = elements, a mid node when an end is).
 std::vector<std::uint8_t> FvEngine::wet_nodes() const {
-  const CellMesh& c = solver_.cells();
-  std::vector<std::uint8_t> wet(mesh_.node_count(), 0);
-  for (int i = 0; i < c.cell_count; ++i)
-    if (solver_.state().h[i] > solver_.dry_depth())
-      for (int k : c.corners[i]) wet[k] = 1;
-  if (c.kind == FvCells::elements)
-    for (const auto& el : mesh_.elements)
-      for (int k = 0; k < 3; ++k) wet[el[3 + k]] = wet[el[k]] | wet[el[(k + 1) % 3]];
-  return wet;
+  nodal_state();
+  return nodal_wet_;
 }
 
 void FvEngine::write_fields(const std::string& path, double t) const {

@@ -39,7 +39,8 @@ class FvEngine final : public FlowEngine {
   const Case& case_;
   FiniteVolumeSolver solver_;
   std::unique_ptr<FvFlowField> field_;
-  mutable FlowState nodal_;  // the nodal view, computed when asked
+  mutable FlowState nodal_;                      // the nodal view, computed when asked
+  mutable std::vector<std::uint8_t> nodal_wet_;  // per node: a wet cell touches it
   mutable bool nodal_valid_ = false;
 };
 

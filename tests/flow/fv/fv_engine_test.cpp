@@ -104,6 +104,9 @@ TEST(FvEngine, NodalStateOfALakeAtRestIsItsLevel) {
       for (int k : cells.corners[i]) wet[k] = 1;
   const FlowState& nodal = engine.nodal_state();
   ASSERT_EQ(static_cast<int>(nodal.eta.size()), mesh.vertex_count);
+  const std::vector<std::uint8_t> flags = engine.wet_nodes();  // what pictures draw as water
+  ASSERT_EQ(static_cast<int>(flags.size()), mesh.node_count());
+  for (int k = 0; k < mesh.vertex_count; ++k) EXPECT_EQ(flags[k], wet[k]) << "vertex " << k;
   int wet_vertices = 0, dry_vertices = 0;
   for (int k = 0; k < mesh.vertex_count; ++k) {
     const Vec2& x = mesh.nodes[k];
