@@ -1,8 +1,11 @@
 #include "flow/fem/fem_flow_field.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
+#include "flow/body_footprint.hpp"
 #include "mesh/shape_functions.hpp"
 
 namespace flotsam {
@@ -59,6 +62,22 @@ FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
   return out;
 }
 
+namespace {
+
+// The elements as the footprint walk sees them: every element carries a share.
+struct Elements {
+  const Mesh& mesh;
+  Vec2 centroid(int e) const {
+    const auto& el = mesh.elements[e];
+    return (mesh.nodes[el[0]] + mesh.nodes[el[1]] + mesh.nodes[el[2]]) / 3.0;
+  }
+  double area(int e) const { return mesh.area[e]; }
+  const std::array<int, 3>& neighbours(int e) const { return mesh.neighbours[e]; }  // < 0: edge
+  bool counts(int) const { return true; }
+};
+
+}  // namespace
+
 void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions) {
   const Mesh& mesh = solver_.mesh();
   const double rho = solver_.flow_case().flow.water_density;  // [kg m^-3]
@@ -71,40 +90,17 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
     const double zb = (z[el[3]] + z[el[4]] + z[el[5]]) / 3.0;  // exact mean of a P2 field
     return rho * mesh.area[e] * (eta - zb);
   };
-  // Elements near a body are found by a walk over neighbours from the element holding its
-  // centre, among those whose centroid lies within the footprint's circumcircle widened by the
-  // element's own size; the footprint holds those whose centroid is inside the rectangle.
-  std::vector<int> stamp(mesh.element_count(), -1), queue;
+  FootprintWalk walk(mesh.element_count());
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
     const Location where = locator_.locate(r.centre, -1);
     if (!where.inside) continue;
-    const Vec2 axis(std::cos(r.angle), std::sin(r.angle));
-    const double reach = r.half_extents.norm();  // [m]
-    std::vector<int> covered;
-    double mass = 0.0;
-    queue.assign(1, where.element);
-    stamp[where.element] = k;
-    for (std::size_t q = 0; q < queue.size(); ++q) {
-      const int e = queue[q];
-      const auto& el = mesh.elements[e];
-      const Vec2 c = (mesh.nodes[el[0]] + mesh.nodes[el[1]] + mesh.nodes[el[2]]) / 3.0 - r.centre;
-      if (c.norm() > reach + 2.0 * std::sqrt(mesh.area[e])) continue;
-      if (std::abs(c.dot(axis)) <= r.half_extents.x() &&
-          std::abs(cross(axis, c)) <= r.half_extents.y()) {
-        covered.push_back(e);
-        mass += element_water_mass(e);
-      }
-      for (int n : mesh.neighbours[e])
-        if (n >= 0 && stamp[n] != k) {
-          stamp[n] = k;
-          queue.push_back(n);
-        }
-    }
-    if (covered.empty()) {  // a footprint smaller than the elements: the one holding the centre
-      covered.push_back(where.element);
-      mass = element_water_mass(where.element);
-    }
+    const std::vector<int>& found = walk.covered(r, where.element, k, Elements{mesh});
+    // A footprint smaller than the elements: the one holding the centre.
+    const std::span<const int> covered =
+        found.empty() ? std::span<const int>(&where.element, 1) : found;
+    double mass = 0.0;  // [kg]
+    for (int e : covered) mass += element_water_mass(e);
     for (int e : covered) forces[e] += r.force / mass;  // [m s^-2]
   }
   solver_.set_element_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));

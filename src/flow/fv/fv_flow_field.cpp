@@ -1,7 +1,11 @@
 #include "flow/fv/fv_flow_field.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
+
+#include "flow/body_footprint.hpp"
 
 namespace flotsam {
 
@@ -75,47 +79,38 @@ FlowSample FvFlowField::sample(const Vec2& p, double t, int& hint) const {
   return out;
 }
 
+namespace {
+
+// The cells as the footprint walk sees them: the wet ones carry a share.
+struct WetCells {
+  const CellMesh& c;
+  const std::vector<double>& h;
+  double wet_depth;  // [m]
+  const Vec2& centroid(int i) const { return c.centroid[i]; }
+  double area(int i) const { return c.area[i]; }
+  const std::array<int, 3>& neighbours(int i) const { return c.neighbour[i]; }
+  bool counts(int i) const { return h[i] > wet_depth; }
+};
+
+}  // namespace
+
 void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions) {
   const CellMesh& c = solver_.cells();
-  const auto& h = solver_.state().h;
-  const double wet_depth = solver_.dry_depth();
+  const WetCells cells{c, solver_.state().h, solver_.dry_depth()};
   std::vector<Vec2> forces(c.cell_count, Vec2::Zero());
-  // Cells near a body are found by a walk over neighbours from the cell holding its centre,
-  // among those whose centroid lies within the footprint's circumcircle widened by the cell's
-  // size; the footprint holds the wet ones whose centroid is inside the rectangle.
-  std::vector<int> stamp(c.cell_count, -1), queue, covered;
+  FootprintWalk walk(c.cell_count);
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
     FlowSample where;
     int hint = -1;
     const int start = cell_at(r.centre, hint, where);
     if (start < 0) continue;
-    const Vec2 axis(std::cos(r.angle), std::sin(r.angle));
-    const double reach = r.half_extents.norm();  // [m]
-    double area = 0.0;
-    covered.clear();
-    queue.assign(1, start);
-    stamp[start] = k;
-    for (std::size_t q = 0; q < queue.size(); ++q) {
-      const int i = queue[q];
-      const Vec2 d = c.centroid[i] - r.centre;
-      if (d.norm() > reach + 2.0 * std::sqrt(c.area[i])) continue;
-      if (h[i] > wet_depth && std::abs(d.dot(axis)) <= r.half_extents.x() &&
-          std::abs(cross(axis, d)) <= r.half_extents.y()) {
-        covered.push_back(i);
-        area += c.area[i];
-      }
-      for (int j : c.neighbour[i])
-        if (j >= 0 && stamp[j] != k) {
-          stamp[j] = k;
-          queue.push_back(j);
-        }
-    }
-    if (covered.empty()) {
-      if (h[start] <= wet_depth) continue;  // on a dry bed: nothing reaches the water
-      covered.push_back(start);
-      area = c.area[start];
-    }
+    const std::vector<int>& found = walk.covered(r, start, k, cells);
+    if (found.empty() && !cells.counts(start)) continue;  // on a dry bed: nothing reaches water
+    // A footprint smaller than the cells: the one holding the centre.
+    const std::span<const int> covered = found.empty() ? std::span<const int>(&start, 1) : found;
+    double area = 0.0;  // [m^2]
+    for (int i : covered) area += c.area[i];
     for (int i : covered) forces[i] += r.force * (c.area[i] / area);  // [N]
   }
   solver_.set_cell_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
