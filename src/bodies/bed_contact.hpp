@@ -10,6 +10,11 @@
 // The same holds for the yaw torque with the bound T_max = mu_bed W' L / 4 (friction spread
 // along the body). That friction can stop a body but not reverse it is the integrator's job
 // (body_integrator.cpp: a sub-step that would reverse the sliding ends with the body at rest).
+//
+// A held body's acceleration is exactly zero, not the floating-point sum F + F_bed: that sum
+// leaves a residue of order 1e-16 |F|, which sets the body sliding at a speed of round-off, the
+// full kinetic friction then reverses it within a sub-step, and the integrator would chatter
+// between stick and slip in steps of microseconds (body_motion.cpp uses `held`).
 #include "core/vec.hpp"
 
 namespace flotsam {
@@ -29,6 +34,8 @@ inline Vec2 slope_force(double W_eff, const Vec2& grad_zb) {
 struct BedFriction {
   Vec2 force = Vec2::Zero();  // F_bed [N]
   double torque = 0.0;        // T_bed [N m]
+  bool held = false;          // at rest and held: the body's acceleration is exactly zero
+  bool spin_held = false;     // not spinning and held: its angular acceleration is exactly zero
 };
 
 /// Friction for velocity u_p, spin omega, other forces F_other and torques T_other, bounds

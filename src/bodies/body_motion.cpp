@@ -70,6 +70,7 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
 
   // Bed contact of a grounded body (spec 3.4).
   Vec2 F_bed = Vec2::Zero();
+  bool held = false, spin_held = false;
   if (!floating) {
     const double W_eff = effective_weight(m_p, m_f, model.g);
     F_bed = slope_force(W_eff, at_G.grad_zb);
@@ -77,12 +78,15 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
         bed_friction(u_p, omega, F + F_bed, T, model.physics.bed_friction, W_eff, bodies.length[i]);
     F_bed += friction.force;
     T += friction.torque;
+    held = friction.held;
+    spin_held = friction.spin_held;
   }
   F += F_bed;
 
-  const Vec2 du_p_dt = F / (m_p + C_a * m_f);  // (M-5)
+  // (M-5); a held body does not move, exactly (bed_contact.hpp says why not F / m).
+  const Vec2 du_p_dt = held ? Vec2::Zero() : Vec2(F / (m_p + C_a * m_f));
   dy.segment<2>(3) = du_p_dt;
-  dy[5] = T / bodies.inertia[i];
+  dy[5] = spin_held ? 0.0 : T / bodies.inertia[i];
   if (loads) {
     loads->drag = drag.force;
     loads->fluid = F_fluid;

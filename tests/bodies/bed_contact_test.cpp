@@ -53,5 +53,27 @@ TEST(BedContact, GroundedLogInAWeakCurrentDoesNotCreep) {
   EXPECT_NEAR((loads.bed + loads.drag + loads.fluid).norm(), 0.0, 1e-12 * loads.drag.norm());
 }
 
+/// The same on a side slope, drag and slope force at an angle: F + F_bed rounds to ~1e-16 |F|,
+/// yet a held body's acceleration must be exactly zero (a residue would set it sliding).
+TEST(BedContact, GroundedLogOnASideSlopeInACurrentHasExactlyZeroAcceleration) {
+  BodySet bodies;
+  bodies.add(BodySpec{});
+  AnalyticFlowSpec spec;
+  spec.velocity = {0.9, -0.17};
+  spec.eta = 0.05;
+  spec.bed_gradient = {-0.0023, -0.018};
+  const AnalyticFlow flow(spec);
+  ForceModel model;
+  model.physics.bed_friction = 0.6;
+  BodyStateVector y;
+  y << 0, 0, 0.3, 0, 0, 0;
+  int hint = -1;
+  BodyLoads loads;
+  const BodyStateVector dy = body_derivative(bodies, 0, 0.0, y, flow, hint, model, &loads);
+  ASSERT_TRUE(loads.grounded);
+  EXPECT_GT(loads.bed.norm(), 0.0);
+  EXPECT_EQ(dy.tail<3>().norm(), 0.0);
+}
+
 }  // namespace
 }  // namespace flotsam
