@@ -22,6 +22,7 @@ struct Expression::Impl {
   std::string origin;
   double x = 0.0;  // [m], bound to the parser's variable x
   double y = 0.0;  // [m], bound to the parser's variable y
+  double z = 0.0;  // [m], bound to z when the formula may use it
   mu::Parser parser;
 };
 
@@ -47,7 +48,8 @@ std::string without_position(const std::string& message) {
 
 }  // namespace
 
-Expression::Expression(std::string text, std::string origin) : impl_(std::make_shared<Impl>()) {
+Expression::Expression(std::string text, std::string origin, bool uses_z)
+    : impl_(std::make_shared<Impl>()) {
   Impl& e = *impl_;
   e.text = std::move(text);
   e.origin = std::move(origin);
@@ -62,17 +64,19 @@ Expression::Expression(std::string text, std::string origin) : impl_(std::make_s
     e.parser.DefineConst("_e", std::numbers::e);
     e.parser.DefineVar("x", &e.x);
     e.parser.DefineVar("y", &e.y);
+    if (uses_z) e.parser.DefineVar("z", &e.z);
     e.parser.SetExpr(e.text);
     // Parses the whole formula, collecting its variables instead of failing on unknown ones.
     for (const auto& [name, address] : e.parser.GetUsedVar())
-      if (name != "x" && name != "y") unknown.push_back(name);
+      if (name != "x" && name != "y" && !(uses_z && name == "z")) unknown.push_back(name);
   } catch (const mu::ParserError& error) {
     throw_syntax_error(e.origin, e.text, error);
   }
   if (!unknown.empty()) {
-    throw_input_error("{}: unknown variable{} {} in '{}'; a formula may use only x and y [m]",
-                      e.origin, unknown.size() > 1 ? "s" : "",
-                      fmt::format("'{}'", fmt::join(unknown, "', '")), e.text);
+    throw_input_error("{}: unknown variable{} {} in '{}'; a formula may use only {} [m]", e.origin,
+                      unknown.size() > 1 ? "s" : "",
+                      fmt::format("'{}'", fmt::join(unknown, "', '")), e.text,
+                      uses_z ? "x, y and z (the terrain raster's elevation)" : "x and y");
   }
 }
 
@@ -86,11 +90,12 @@ const std::string& Expression::origin() const {
   return impl_ ? impl_->origin : none;
 }
 
-double Expression::operator()(double x, double y) const {
+double Expression::operator()(double x, double y, double z) const {
   assert(impl_ && "an empty Expression has no value; check empty() first");
   Impl& e = *impl_;
   e.x = x;
   e.y = y;
+  e.z = z;
   double value = 0.0;
   try {
     value = e.parser.Eval();

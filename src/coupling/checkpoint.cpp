@@ -70,9 +70,7 @@ void Simulation::read_checkpoint(const std::string& path) {
     auto order = r.read<int>("contacts.sweep_order");
     contacts_->restore(std::move(last), std::move(order), r.read_value<int>("contacts.sweep_axis"));
   }
-  if (options_.write_output)
-    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_groups(),
-                                          output_times, has_bodies_);
+  open_output(&output_times);
 }
 
 }  // namespace flotsam

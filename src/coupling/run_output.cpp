@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <fstream>
 
+#include "core/error.hpp"
 #include "io/output_directory.hpp"
 #include "io/run_state.hpp"
 #include "io/vtk_writer.hpp"
@@ -66,6 +68,7 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
   const std::string file = fmt::format("flow_{:06d}.vtu", count());
   flow.write_fields((directory_ / file).string(), t);
   flow_index_.add(t, file);
+  if (raster_grid_) flow.write_envelope_rasters((directory_ / name_).string(), *raster_grid_);
   if (with_bodies) write_bodies(bodies, t);
   write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), t,
                      flow.eta(), flow.u(), flow.v(), flow.wet_nodes(), bodies, jammed);
@@ -75,6 +78,12 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
     if (open_group_[g]) row.push_back(b.group_outflow[g]);
   balance_->row(row);
   times_.push_back(t);
+}
+
+void RunOutput::write_coordinate_system(const std::string& wkt) const {
+  std::ofstream crs(directory_ / (name_ + "_crs.wkt"));
+  crs << wkt << "\n";
+  if (!crs) throw_run_error("could not write '{}'", (directory_ / (name_ + "_crs.wkt")).string());
 }
 
 void RunOutput::write_bodies(const BodySet& bodies, double t) {

@@ -9,8 +9,13 @@
 //   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
 //   run.bin + state_NNNNNN.bin            the mesh once, the state at every output, for
 //                                         `flotsam render` (io/run_state.hpp)
+//   <name>_max_depth.tif, ...             the flood envelopes as GeoTIFF rasters, rewritten at
+//                                         every output (output.rasters)
+//   <name>_crs.wkt                        the coordinate system of every coordinate written,
+//                                         when the case has one
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "bodies/body_set.hpp"
@@ -41,6 +46,11 @@ class RunOutput {
   void write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
              const std::vector<std::uint8_t>& jammed);
 
+  /// From now on every output also writes the flood envelopes as rasters on `grid`.
+  void write_rasters_on(const RasterGrid& grid) { raster_grid_ = grid; }
+  /// Writes <name>_crs.wkt, the coordinate system (WKT) of every coordinate the run writes.
+  void write_coordinate_system(const std::string& wkt) const;
+
   /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
   void write_jams(double t, const JamStatistics& stats, const JamGeometry& geometry,
                   const std::vector<double>& rise, bool with_backwater);
@@ -58,7 +68,8 @@ class RunOutput {
   std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
   PvdWriter flow_index_, body_index_;
   std::vector<double> times_;  // [s] of each output written, in order
-  bool append_ = false;        // tables continue files of an earlier run (restart)
+  std::optional<RasterGrid> raster_grid_;
+  bool append_ = false;  // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
 };

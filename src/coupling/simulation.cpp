@@ -68,10 +68,7 @@ void Simulation::initialize() {
     open_probes(true);
     return;
   }
-  if (options_.write_output) {
-    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_groups(),
-                                          options_.overwrite || case_.output.overwrite, case_.file);
-  }
+  open_output(nullptr);
   open_probes(false);
   if (probes_) probes_->write(time_);
   write_output_if_due(false);
@@ -199,6 +196,24 @@ void Simulation::write_output_if_due(bool force) {
   write_checkpoint((output_->directory() / "checkpoint.bin").string());
   flow_->after_checkpoint();  // as a run restarted from this checkpoint does
   if (reference_flow_) reference_flow_->after_checkpoint();
+}
+
+void Simulation::open_output(const std::vector<double>* output_times) {
+  if (!options_.write_output) return;
+  output_ = output_times ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_,
+                                                       open_groups(), *output_times, has_bodies_)
+                         : std::make_unique<RunOutput>(
+                               output_directory(), case_.name, mesh_, open_groups(),
+                               options_.overwrite || case_.output.overwrite, case_.file);
+  // The case's coordinate system: output.rasters.crs, else the terrain raster's.
+  const std::string crs = !case_.output.raster_crs.empty() ? case_.output.raster_crs
+                          : case_.bed.raster               ? case_.bed.raster->grid().crs_wkt
+                                                           : std::string();
+  if (!crs.empty()) output_->write_coordinate_system(crs);
+  if (case_.output.raster_resolution <= 0.0) return;
+  Vec2 lo = mesh_.nodes.front(), hi = lo;  // the envelopes' rasters cover the mesh
+  for (const Vec2& p : mesh_.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  output_->write_rasters_on(RasterGrid::covering(lo, hi, case_.output.raster_resolution, crs));
 }
 
 void Simulation::run() {

@@ -79,6 +79,8 @@ class Simulation {
   void open_probes(bool append);
   std::vector<std::uint8_t> open_groups() const;  // per mesh group: 1 inflow/outflow, 0 wall
   std::filesystem::path output_directory() const;
+  /// Opens the run's output (a new folder, or continued after `output_times` on a restart).
+  void open_output(const std::vector<double>* output_times);
   // checkpoint.cpp: everything a run needs to continue bit for bit from an output time.
   void write_checkpoint(const std::string& path) const;
   void read_checkpoint(const std::string& path);

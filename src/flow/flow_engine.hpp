@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flow/flood_envelope.hpp"
 #include "flow/flow_field.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/water_balance.hpp"
@@ -66,6 +67,14 @@ class FlowEngine {
   virtual void after_checkpoint() {}
   /// The engine's own lines of the end-of-run summary (each ending in a newline), or "".
   virtual std::string summary() const { return ""; }
+  /// Writes the flood envelopes of the run so far as GeoTIFF rasters on `grid`, files
+  /// `prefix`_<envelope>.tif (flood_envelope.hpp); returns them. Only an engine that keeps
+  /// envelopes (the finite-volume engine) is given rasters to write: the case reader refuses
+  /// output.rasters for the others.
+  virtual std::vector<std::string> write_envelope_rasters(const std::string& /*prefix*/,
+                                                          const RasterGrid& /*grid*/) const {
+    return {};
+  }
 
   // Shorthands for the nodal fields.
   const std::vector<double>& eta() const { return nodal_state().eta; }  // [m] per vertex

@@ -2,6 +2,7 @@
 // A case: everything a run needs, as read from a YAML case file (docs/case-format.md) or built in
 // code by tests and benchmarks. Every field has its unit and its default here; the parser
 // (io/case_file.hpp) fills these structures and rejects what is out of range.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "core/expression.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
+#include "geo/raster.hpp"
 #include "mesh/geometry.hpp"
 
 namespace flotsam {
@@ -17,11 +19,14 @@ namespace flotsam {
 // ---- bed ----------------------------------------------------------------------------------
 
 struct BedConfig {
-  enum class Kind { flat, slope, table, expression } kind = Kind::flat;
+  enum class Kind { flat, slope, table, expression, raster } kind = Kind::flat;
   double level = 0.0;         // z_b at the origin [m]
   Vec2 slope = Vec2::Zero();  // (-dz_b/dx, -dz_b/dy) [-]: positive = bed falls along +x / +y
   TimeSeries profile_x;       // kind == table: z_b as a function of x [m] (piecewise linear)
-  Expression expression;      // kind == expression: z_b(x, y) [m]
+  Expression expression;      // kind == expression: z_b(x, y) [m]; kind == raster: an optional
+                              // edit z_b(x, y, z) of the raster's elevation z [m]
+  std::shared_ptr<const Raster> raster;  // kind == raster: the terrain (sampled bilinearly)
+  std::string origin;                    // "case.yaml:12: bed.raster", for messages
 };
 
 // ---- flow ---------------------------------------------------------------------------------
@@ -182,7 +187,11 @@ struct OutputConfig {
                               // water-surface rise upstream of each bridge (spec 6.3); doubles the
                               // flow's cost
   std::vector<Probe> probes;  // gauges, written to <name>_probes.csv
-  double probe_interval = 0.0;  // [s] between probe rows; 0: every coupling step
+  double probe_interval = 0.0;     // [s] between probe rows; 0: every coupling step
+  double wet_depth = 0.01;         // [m] deeper counts as wet for the flood envelopes' arrival time
+                                   // and wet duration (finite-volume engine)
+  double raster_resolution = 0.0;  // [m] pixel size of the envelopes' GeoTIFF rasters; 0: none
+  std::string raster_crs;          // their coordinate system (WKT); empty: the bed raster's
 };
 
 struct Case {

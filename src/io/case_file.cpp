@@ -123,9 +123,21 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder)
 
 // ---- bed ----------------------------------------------------------------------------------
 
-// One kind: a table in x, a formula in x and y, or a level with an optional slope.
-BedConfig read_bed(const YamlMap& m) {
+// One kind: a table in x, a formula in x and y, a terrain raster (with an optional formula that
+// edits it), or a level with an optional slope.
+BedConfig read_bed(const YamlMap& m, const std::filesystem::path& case_folder) {
   BedConfig bed;
+  if (const auto raster = m.find("raster")) {
+    const std::string why = "the bed is given by raster";
+    for (const char* key : {"profile_x", "level", "slope"}) m.forbid(key, why);
+    std::filesystem::path path = raster->text();
+    if (path.is_relative()) path = (case_folder / path).lexically_normal();
+    bed.kind = BedConfig::Kind::raster;
+    bed.origin = raster->origin();
+    bed.raster = std::make_shared<const Raster>(Raster::read(path.string(), bed.origin));
+    if (const auto edit = m.find("expression")) bed.expression = edit->expression(true);
+    return bed;
+  }
   const std::string kind = m.only_one_of({"profile_x", "expression"});
   if (!kind.empty()) {
     const std::string why = fmt::format("the bed is given by {}", kind);
@@ -223,6 +235,13 @@ OutputConfig read_output(const YamlMap& m) {
   output.backwater = m.boolean("backwater", output.backwater);
   output.probes = read_probes(m);
   output.probe_interval = m.number("probe_interval", output.probe_interval, Range::non_negative());
+  output.wet_depth = m.number("wet_depth", output.wet_depth, Range::positive());
+  if (const auto rasters = m.find("rasters")) {
+    const YamlMap r = rasters->map();
+    output.raster_resolution = r.get("resolution", "the pixel size [m]").number(Range::positive());
+    if (const auto crs = r.find("crs"))
+      output.raster_crs = coordinate_system_wkt(crs->text(), crs->origin());
+  }
   return output;
 }
 
@@ -255,11 +274,15 @@ Case parse_case(const std::string& text, const std::string& file_name) {
   c.name = read_name(root, file_name);
   const std::filesystem::path case_folder = std::filesystem::path(file_name).parent_path();
   c.mesh = read_mesh(root.get("mesh", "where the mesh comes from").map(), case_folder);
-  c.bed = read_bed(root.map("bed"));
+  c.bed = read_bed(root.map("bed"), case_folder);
   c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map());
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
   c.output = read_output(root.map("output"));
+  if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)
+    root.map("output").get("rasters").fail(
+        "the flood envelopes and their rasters come from the finite-volume engine; set "
+        "flow.engine: fv");
   document.check_no_unknown_keys();
   return c;
 }

@@ -150,10 +150,14 @@ Vec2 YamlValue::vec2() const {
   return {items[0].number(), items[1].number()};
 }
 
-Expression YamlValue::expression() const {
+Expression YamlValue::expression(bool uses_z) const {
   if (!node_.IsScalar())
     fail(fmt::format("expected a formula in x and y (or a number), got {}", kind_found()));
-  return Expression(node_.Scalar(), fmt::format("{}:{}: {}", document_->file_name(), line_, path_));
+  return Expression(node_.Scalar(), origin(), uses_z);
+}
+
+std::string YamlValue::origin() const {
+  return fmt::format("{}:{}: {}", document_->file_name(), line_, path_);
 }
 
 TimeSeries YamlValue::series(std::string_view abscissa, Range range) const {

@@ -73,8 +73,11 @@ class YamlValue {
   bool boolean() const;
   std::string text() const;
   Vec2 vec2() const;  // [x, y]
-  /// A formula in x and y (core/expression.hpp) whose errors name "file:line: path".
-  Expression expression() const;
+  /// A formula in x and y (and z with `uses_z`, core/expression.hpp) whose errors name
+  /// "file:line: path".
+  Expression expression(bool uses_z = false) const;
+  /// "file:line: path", where this value was written (for messages raised later).
+  std::string origin() const;
   /// A constant or a table [[x, value], ...] with strictly increasing x (named `abscissa` in
   /// messages) -> TimeSeries.
   TimeSeries series(std::string_view abscissa, Range range = Range::any()) const;

@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,6 +15,8 @@
 #include "../support/straight_channel.hpp"
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
+#include "flow/fv/fv_engine.hpp"
+#include "geo/raster.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
@@ -92,6 +96,48 @@ TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
   for (const char* table : {"restart_bodies.csv", "restart_balance.csv", "restart_jams.csv",
                             "restart.pvd", "restart_bodies.pvd"})
     EXPECT_EQ(text_of(base / "split" / table), text_of(base / "whole" / table)) << table;
+  fs::remove_all(base);
+}
+
+// The finite-volume engine's flood envelopes (running maxima, arrival, wet duration) and their
+// rasters continue across a restart as if the run had never stopped.
+TEST(Restart, KeepsTheFloodEnvelopesBitForBit) {
+  const fs::path base = test::scratch_path("flotsam_restart_envelope_test");
+  fs::remove_all(base);
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  auto flood = [](double end) {
+    Case c = restart_case(end);
+    c.flow.engine = FlowEngineKind::fv;
+    c.flow.initial_eta = Expression("x < 50 ? 1.6 : 1.0", "test");  // a surge down the channel
+    c.output.raster_resolution = 2.0;
+    return c;
+  };
+  auto options = [&](const std::string& dir, bool restart) {
+    return RunOptions{.output_directory = base / dir, .progress = false, .restart = restart};
+  };
+  Simulation whole(flood(12.0), mesh, options("whole", false));
+  whole.run();
+  {
+    Simulation first_part(flood(8.0), mesh, options("split", false));
+    first_part.run();
+  }
+  Simulation rest(flood(12.0), mesh, options("split", true));
+  rest.run();
+  const FloodEnvelope& a = dynamic_cast<const FvEngine&>(whole.flow()).envelope();
+  const FloodEnvelope& b = dynamic_cast<const FvEngine&>(rest.flow()).envelope();
+  EXPECT_EQ(a.max_depth, b.max_depth);
+  EXPECT_EQ(a.max_speed, b.max_speed);
+  EXPECT_EQ(a.max_unit_discharge, b.max_unit_discharge);
+  EXPECT_EQ(a.wet_duration, b.wet_duration);
+  ASSERT_EQ(a.arrival.size(), b.arrival.size());
+  for (std::size_t i = 0; i < a.arrival.size(); ++i)
+    EXPECT_TRUE(a.arrival[i] == b.arrival[i] ||
+                (std::isnan(a.arrival[i]) && std::isnan(b.arrival[i])));
+  EXPECT_GT(*std::max_element(a.max_speed.begin(), a.max_speed.end()), 0.5);  // the surge passed
+  const Raster ra = Raster::read((base / "whole" / "restart_max_depth.tif").string(), "test");
+  const Raster rb = Raster::read((base / "split" / "restart_max_depth.tif").string(), "test");
+  for (int r = 0; r < ra.grid().rows; ++r)
+    for (int c = 0; c < ra.grid().columns; ++c) EXPECT_EQ(ra.at(c, r), rb.at(c, r));
   fs::remove_all(base);
 }
 

@@ -396,6 +396,53 @@ TEST(CaseFile, BedExpressionIsAFormulaInXAndY) {
   EXPECT_DOUBLE_EQ(c.bed.expression(0.0, 0.0), 0.7);
 }
 
+TEST(CaseFile, BedRasterIsReadRelativeToTheCaseWithAnOptionalEdit) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flotsam_bed_raster";
+  std::filesystem::create_directories(dir / "data");
+  const RasterGrid g = RasterGrid::covering({-10, -10}, {110, 30}, 5.0, "");
+  write_geotiff((dir / "data" / "dem.tif").string(), g,
+                std::vector<double>(static_cast<std::size_t>(g.columns) * g.rows, 3.0));
+  const std::string case_file = (dir / "case.yaml").string();
+  const Case c = parse_case(
+      appended("bed:\n  raster: data/dem.tif\n  expression: \"x > 50 ? z - 1 : z\"\n"), case_file);
+  ASSERT_EQ(c.bed.kind, BedConfig::Kind::raster);
+  EXPECT_EQ(c.bed.raster->path(), (dir / "data" / "dem.tif").string());
+  EXPECT_EQ(c.bed.origin, case_file + ":13: bed.raster");
+  EXPECT_DOUBLE_EQ(c.bed.expression(60.0, 0.0, 3.0), 2.0);
+
+  EXPECT_THAT(error_of(appended("bed:\n  raster: none.tif\n")),
+              HasSubstr("case.yaml:13: bed.raster: the raster 'none.tif' does not exist"));
+  EXPECT_THAT(error_of(appended("bed:\n  raster: " + (dir / "data" / "dem.tif").string() +
+                                "\n  level: 2\n")),
+              HasSubstr("case.yaml:14: bed.level: not allowed here: the bed is given by raster"));
+  EXPECT_THAT(error_of(appended("bed:\n  raster: " + (dir / "data" / "dem.tif").string() +
+                                "\n  expression: \"w + z\"\n")),
+              HasSubstr("unknown variable 'w' in 'w + z'; a formula may use only x, y and z"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CaseFile, FloodEnvelopeRastersAndTheirCoordinateSystem) {
+  const Case c = parse_case(
+      edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
+          "output:\n  wet_depth: 0.05\n  rasters: {resolution: 2, crs: \"EPSG:32633\"}\n",
+      "case.yaml");
+  EXPECT_EQ(c.output.wet_depth, 0.05);
+  EXPECT_EQ(c.output.raster_resolution, 2.0);
+  EXPECT_THAT(c.output.raster_crs, HasSubstr("UTM zone 33N"));
+  EXPECT_THAT(error_of(appended("output:\n  rasters: {resolution: 2}\n")),
+              HasSubstr("case.yaml:13: output.rasters: the flood envelopes and their rasters come "
+                        "from the finite-volume engine; set flow.engine: fv"));
+  EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
+                       "output:\n  rasters: {resolution: 0}\n"),
+              HasSubstr("case.yaml:14: output.rasters.resolution: expected a number > 0"));
+  EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
+                       "output:\n  rasters: {resolution: 1, crs: \"EPSG:4326\"}\n"),
+              HasSubstr("output.rasters.crs: 'EPSG:4326' is a geographic coordinate system"));
+  EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
+                       "output:\n  rasters: {resolution: 1, crs: \"nowhere\"}\n"),
+              HasSubstr("output.rasters.crs: 'nowhere' is not a coordinate system GDAL knows"));
+}
+
 TEST(CaseFile, InitialStateMayBeFormulas) {
   const Case c = parse_case(edited("  initial: {eta: 1.0}",
                                    "  initial: {eta: \"x < 5 ? 0.005 : 0\", u: 0.5, v: \"0.1*y\"}"),

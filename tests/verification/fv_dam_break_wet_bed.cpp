@@ -1,11 +1,7 @@
 // Verifies that the finite-volume engine breaks a dam onto a wet bed as Stoker's exact solution
-// says (Stoker 1957, Water waves, ch. 10; SWASHES 4.1.1, Delestre et al. 2013): h_l = 1 m behind
-// a dam at x0 = 10 m of a frictionless 20 m channel, h_r = 0.1 m in front, at t = 1 s (the waves
-// still inside), on three nested meshes. The exact solution is a rarefaction into the left, a
-// constant state (h_m, u_m) and a shock into the right; h_m solves, by Newton,
-//   u_m = 2 (c_l - c_m)                                    (the left rarefaction's invariant)
-//   u_m = (h_m - h_r) sqrt(g (h_m + h_r) / (2 h_m h_r))    (the shock's jump conditions)
-// with c = sqrt(g h), and the shock moves at s = h_m u_m / (h_m - h_r). Checked:
+// says (tests/support/stoker.hpp): h_l = 1 m behind a dam at x0 = 10 m of a frictionless 20 m
+// channel, h_r = 0.1 m in front, at t = 1 s (the waves still inside), on three nested meshes.
+// Checked:
 //   - the L1 errors of H and Hu fall at an observed order above 0.5 (about 1 is expected with a
 //     shock; 0.5 is a conservative bound);
 //   - the shock, the furthest cell with H above the mean of h_m and h_r, lies within two cell
@@ -17,6 +13,7 @@
 #include <cstdio>
 
 #include "../support/fv_cases.hpp"
+#include "../support/stoker.hpp"
 
 namespace flotsam {
 namespace {
@@ -25,43 +22,11 @@ using test::DamBreakChannel;
 
 constexpr double g = 9.81, h_l = 1.0, h_r = 0.1, t_end = 1.0;  // [m s^-2], [m], [m], [s]
 
-struct Stoker {
-  double h_m, u_m;  // [m], [m/s] between the rarefaction and the shock
-  double s;         // [m/s] shock speed
-};
+const test::Stoker stoker(g, h_l, h_r);
 
-// The middle state by Newton on f(h) = 2 (c_l - sqrt(g h)) - (h - h_r) k(h),
-// k(h) = sqrt(g (h + h_r) / (2 h h_r)).
-Stoker solve_stoker() {
-  const double c_l = std::sqrt(g * h_l);
-  auto k = [](double h) { return std::sqrt(g * (h + h_r) / (2.0 * h * h_r)); };
-  double h = 0.5 * (h_l + h_r);
-  for (int n = 0; n < 50; ++n) {
-    const double f = 2.0 * (c_l - std::sqrt(g * h)) - (h - h_r) * k(h);
-    const double dk = -g / (4.0 * h * h * k(h));  // k'(h) = -g / (4 h^2 k)
-    const double df = -std::sqrt(g / h) - k(h) - (h - h_r) * dk;
-    h -= f / df;
-  }
-  const double u = 2.0 * (c_l - std::sqrt(g * h));
-  return {h, u, h * u / (h - h_r)};
-}
-
-const Stoker stoker = solve_stoker();
-
-// Stoker's solution at x [m], time t [s]: depth [m] and unit discharge [m^2/s].
-struct State {
-  double h, hu;
-};
-State exact(double x, double t) {
-  const double xi = (x - DamBreakChannel::x_dam) / t;  // [m/s]
-  const double c_l = std::sqrt(g * h_l), c_m = std::sqrt(g * stoker.h_m);
-  if (xi <= -c_l) return {h_l, 0.0};
-  if (xi <= stoker.u_m - c_m) {
-    const double h = (2.0 * c_l - xi) * (2.0 * c_l - xi) / (9.0 * g);
-    return {h, h * 2.0 / 3.0 * (xi + c_l)};
-  }
-  if (xi <= stoker.s) return {stoker.h_m, stoker.h_m * stoker.u_m};
-  return {h_r, 0.0};
+// Stoker's solution at x [m], time t [s].
+test::Stoker::State exact(double x, double t) {
+  return stoker.at((x - DamBreakChannel::x_dam) / t);
 }
 
 struct Measured {

@@ -23,9 +23,12 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
 // ---- setup ----------------------------------------------------------------------------------
 
 void ShallowWaterSolver::initialize() {
-  const BedFunction bed = options_.bed ? options_.bed : make_bed_function(case_.bed);
-  z_b_.resize(mesh_.node_count());
-  for (int i = 0; i < mesh_.node_count(); ++i) z_b_[i] = bed(mesh_.nodes[i]);
+  if (options_.bed) {
+    z_b_.resize(mesh_.node_count());
+    for (int i = 0; i < mesh_.node_count(); ++i) z_b_[i] = options_.bed(mesh_.nodes[i]);
+  } else {
+    z_b_ = bed_at_nodes(mesh_, case_.bed);
+  }
 
   // eta per P1 vertex: the case's formula, or still water linear in x between the two initial
   // values (spec 8.2); u, v per P2 node: the case's formulas, or at rest. set_state rejects a

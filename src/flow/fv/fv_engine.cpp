@@ -13,23 +13,19 @@
 
 namespace flotsam {
 
-namespace {
-
-std::vector<double> bed_at_nodes(const Mesh& mesh, const BedConfig& bed) {
-  const BedFunction z = make_bed_function(bed);
-  std::vector<double> z_b(mesh.nodes.size());
-  for (std::size_t k = 0; k < z_b.size(); ++k) z_b[k] = z(mesh.nodes[k]);
-  return z_b;
-}
-
-}  // namespace
-
 FvEngine::FvEngine(const Mesh& mesh, const Case& flow_case)
     : mesh_(mesh), case_(flow_case), solver_(mesh, flow_case) {}
 
 void FvEngine::initialize() {
   solver_.initialize();
-  field_ = std::make_unique<FvFlowField>(solver_, mesh_, bed_at_nodes(mesh_, case_.bed));
+  envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);
+  envelope_.update(solver_.state().h, solver_.state().hu, solver_.state().hv, 0.0, 0.0,
+                   solver_.dry_depth());
+  solver_.set_sub_step_observer([this](double t, double dt) {
+    const ConservedState& U = solver_.state();
+    envelope_.update(U.h, U.hu, U.hv, t, dt, solver_.dry_depth());
+  });
+  field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed());
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -64,6 +60,8 @@ void FvEngine::settle(const TimeConfig& time) {
   steady.time = 0.0;
   solver_.set_state(steady);
   solver_.restart_water_balance();
+  envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);  // the run starts now
+  envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0, solver_.dry_depth());
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -140,6 +138,11 @@ void FvEngine::write_fields(const std::string& path, double t) const {
   fields.add_cell_scalar("|u| [m/s]", speed);
   fields.add_cell_scalar("Froude [-]", froude);
   fields.add_cell_scalar("z_b [m]", solver_.bed());
+  fields.add_cell_scalar("max H [m]", envelope_.max_depth);
+  fields.add_cell_scalar("max |u| [m/s]", envelope_.max_speed);
+  fields.add_cell_scalar("max H|u| [m^2/s]", envelope_.max_unit_discharge);
+  fields.add_cell_scalar("arrival time [s]", envelope_.arrival);
+  fields.add_cell_scalar("wet duration [s]", envelope_.wet_duration);
   fields.add_p1_scalar("eta (nodal) [m]", nodal.eta);
   fields.add_point_vector("u (nodal) [m/s]", nodal_u);
   fields.add_point_scalar("z_b (nodal) [m]", field_->node_bed());
@@ -158,6 +161,7 @@ void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
   write_water_balance(w, prefix, b);
   w.write(prefix + ".sub_steps", std::vector<double>{static_cast<double>(s.count), s.smallest,
                                                      s.total, static_cast<double>(s.rejected)});
+  envelope_.save(w, prefix);
 }
 
 void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
@@ -177,6 +181,7 @@ void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
   const auto s = r.read<double>(prefix + ".sub_steps");
   solver_.restore_sub_steps(
       {static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1), s.at(2)});
+  envelope_.restore(r, prefix);
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -188,6 +193,13 @@ std::string FvEngine::summary() const {
       "smallest {:.3g} s, mean {:.3g} s; wet {:.1f} % of the area\n",
       solver_.cells().cell_count, s.count, s.rejected, s.smallest,
       s.count > 0 ? s.total / s.count : 0.0, 100.0 * solver_.wet_fraction());
+}
+
+std::vector<std::string> FvEngine::write_envelope_rasters(const std::string& prefix,
+                                                          const RasterGrid& grid) const {
+  return flotsam::write_envelope_rasters(
+      envelope_, grid, [this](const Vec2& p, int& hint) { return field_->cell_of(p, hint); },
+      prefix);
 }
 
 }  // namespace flotsam

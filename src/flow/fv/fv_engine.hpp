@@ -31,6 +31,11 @@ class FvEngine final : public FlowEngine {
   void save(ArchiveWriter& w, const std::string& prefix) const override;
   void restore(ArchiveReader& r, const std::string& prefix) override;
   std::string summary() const override;
+  std::vector<std::string> write_envelope_rasters(const std::string& prefix,
+                                                  const RasterGrid& grid) const override;
+  const FloodEnvelope& envelope() const { return envelope_; }
+  /// The cell holding p, or -1 outside the domain (walking from element `hint`, updated).
+  int field_cell_of(const Vec2& p, int& hint) const { return field_->cell_of(p, hint); }
 
   const FiniteVolumeSolver& solver() const { return solver_; }
 
@@ -39,6 +44,7 @@ class FvEngine final : public FlowEngine {
   const Case& case_;
   FiniteVolumeSolver solver_;
   std::unique_ptr<FvFlowField> field_;
+  FloodEnvelope envelope_;                       // per cell, updated after every sub-step
   mutable FlowState nodal_;                      // the nodal view, computed when asked
   mutable std::vector<std::uint8_t> nodal_wet_;  // per node: a wet cell touches it
   mutable bool nodal_valid_ = false;

@@ -36,6 +36,12 @@ void FvFlowField::reset_to_state() {
   t0_ = t1_ = solver_.time();
 }
 
+int FvFlowField::cell_of(const Vec2& p, int& hint) const {
+  const Location where = locator_.locate(p, hint);
+  if (where.element >= 0) hint = where.element;
+  return where.inside ? solver_.cells().cell_of(where.element, where.r, where.s) : -1;
+}
+
 int FvFlowField::cell_at(const Vec2& p, int& hint, FlowSample& out) const {
   const Location where = locator_.locate(p, hint);
   if (where.element >= 0) hint = where.element;

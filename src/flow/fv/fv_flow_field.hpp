@@ -34,6 +34,8 @@ class FvFlowField final : public FlowField {
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;
 
   const std::vector<double>& node_bed() const { return node_bed_; }
+  /// The cell holding p, or -1 outside the domain, walking from element `hint` (updated).
+  int cell_of(const Vec2& p, int& hint) const;
 
  private:
   int cell_at(const Vec2& p, int& hint, FlowSample& out) const;

@@ -60,7 +60,7 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case)
 
 void FiniteVolumeSolver::initialize() {
   const int n = cells_.cell_count;
-  const BedFunction bed = make_bed_function(case_.bed);
+  node_bed_ = bed_at_nodes(mesh_, case_.bed);
   const FlowConfig& flow = case_.flow;
   double x_min = std::numeric_limits<double>::max(), x_max = -x_min;
   for (const Vec2& p : mesh_.nodes) x_min = std::min(x_min, p.x()), x_max = std::max(x_max, p.x());
@@ -71,7 +71,7 @@ void FiniteVolumeSolver::initialize() {
   U_.hv.assign(n, 0.0);
   for (int i = 0; i < n; ++i) {
     double z = 0.0;
-    for (int corner : cells_.corners[i]) z += bed(mesh_.nodes[corner]);
+    for (int corner : cells_.corners[i]) z += node_bed_[corner];
     z_[i] = z / 3.0;
     const Vec2& p = cells_.centroid[i];
     // Still water with eta linear in x (spec 8.2), or the case's formulas; dry below the bed.
@@ -338,6 +338,7 @@ void FiniteVolumeSolver::advance(double dt) {
     stats_.total += h;
     if (std::isfinite(dt_courant) && (stats_.smallest == 0.0 || dt_courant < stats_.smallest))
       stats_.smallest = dt_courant;
+    if (sub_step_observer_) sub_step_observer_(U_.time, h);
   }
   U_.time = t_end;
   balance_.volume = volume();

@@ -10,6 +10,7 @@
 // where L is the finite-volume operator:  reconstruct (reconstruction.hpp) -> edge fluxes
 // (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
 // states, fv_boundary.hpp) -> sum per cell with the bed-slope, Coriolis, wind and body sources.
+#include <functional>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -58,14 +59,19 @@ class FiniteVolumeSolver {
 
   /// Body forces [N] per cell, acting on the water during the next steps (two-way coupling).
   void set_cell_forces(std::vector<Vec2> forces) { cell_force_ = std::move(forces); }
+  /// Called after every sub-step with the state's new time and the sub-step's length [s].
+  void set_sub_step_observer(std::function<void(double t, double dt)> f) {
+    sub_step_observer_ = std::move(f);
+  }
   const std::vector<Vec2>& cell_forces() const { return cell_force_; }
 
   /// The state's cell values and limited gradients (what the bodies sample).
   void fill_field(CellField& field) const;
 
   const CellMesh& cells() const { return cells_; }
-  const std::vector<double>& bed() const { return z_; }  // [m] per cell
-  double volume() const;                                 // [m^3]
+  const std::vector<double>& bed() const { return z_; }              // [m] per cell
+  const std::vector<double>& node_bed() const { return node_bed_; }  // [m] per mesh node
+  double volume() const;                                             // [m^3]
   const WaterBalance& water_balance() const { return balance_; }
   void restore_water_balance(const WaterBalance& b) { balance_ = b; }
   /// V(0) = V now, nothing through the boundaries yet.
@@ -95,13 +101,15 @@ class FiniteVolumeSolver {
   CellMesh cells_;
   FvBoundaries boundaries_;
   FrictionModel friction_;
+  std::function<void(double, double)> sub_step_observer_;
   double g_;               // [m s^-2]
   double dry_depth_;       // [m]
   double velocity_depth_;  // H_eps [m]
   double coriolis_;        // f [1/s]
   Vec2 wind_stress_;       // tau_w / rho [m^2/s^2]
 
-  std::vector<double> z_;  // [m] bed per cell: the mean of its corners
+  std::vector<double> node_bed_;  // [m] bed at the mesh's nodes
+  std::vector<double> z_;         // [m] bed per cell: the mean of its corners
   ConservedState U_, U1_;
   // Scratch of the operator L (mutable: evaluating L, as courant_step does, changes no state).
   mutable CellField field_;       // the stage's reconstruction

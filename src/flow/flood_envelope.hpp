@@ -1,0 +1,53 @@
+#pragma once
+// Flood envelopes (docs/model.md "Flood envelopes"): per cell, over the whole run, the largest
+// depth, speed and unit discharge H |u|, the time the cell first became wet (arrival) and how
+// long it has been wet. "Wet" means deeper than a threshold (output.wet_depth). Updated after
+// every sub-step of the engine, so a peak between two coupling steps is not missed; kept in
+// checkpoints, so a restart continues the running maxima.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "geo/raster.hpp"
+
+namespace flotsam {
+
+class ArchiveWriter;
+class ArchiveReader;
+
+struct FloodEnvelope {
+  double wet_depth = 0.01;                 // [m] deeper than this counts as wet
+  std::vector<double> max_depth;           // [m]
+  std::vector<double> max_speed;           // [m/s]
+  std::vector<double> max_unit_discharge;  // H |u| [m^2/s]
+  std::vector<double> arrival;             // [s] first time wet; NaN: never yet
+  std::vector<double> wet_duration;        // [s] the steps that end wet, after the arrival
+
+  /// n cells, nothing seen yet.
+  void reset(int n, double wet_depth_threshold);
+  int size() const { return static_cast<int>(max_depth.size()); }
+
+  /// Takes in the state at time t [s], the end of a step of length dt [s]: depth h [m] and
+  /// discharge (hu, hv) [m^2/s] per cell; speeds only where h > velocity_depth [m].
+  void update(const std::vector<double>& h, const std::vector<double>& hu,
+              const std::vector<double>& hv, double t, double dt, double velocity_depth);
+
+  /// The envelopes as records `prefix`.envelope.* of a checkpoint; read back checked against n
+  /// cells (an InputError naming the checkpoint otherwise).
+  void save(ArchiveWriter& w, const std::string& prefix) const;
+  void restore(ArchiveReader& r, const std::string& prefix);
+};
+
+/// The cell holding a point (-1 outside the domain), walking from `hint`, which it updates.
+using CellLocator = std::function<int(const Vec2& p, int& hint)>;
+
+/// Writes the envelopes on `grid` as GeoTIFFs `prefix`_max_depth.tif, _max_speed.tif,
+/// _max_unit_discharge.tif, _arrival_time.tif, _wet_duration.tif: each pixel the value of the
+/// cell holding its centre; nodata outside the domain, and where the cell was never wet for the
+/// arrival time. Returns the files written.
+std::vector<std::string> write_envelope_rasters(const FloodEnvelope& envelope,
+                                                const RasterGrid& grid, const CellLocator& cell_at,
+                                                const std::string& prefix);
+
+}  // namespace flotsam

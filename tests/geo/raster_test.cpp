@@ -1,0 +1,152 @@
+// Rasters (geo/raster.hpp): bilinear sampling exact on planes and bilinear patches over the whole
+// extent, nodata and outside, GeoTIFF round trip of values, georeferencing and coordinate system.
+#include "geo/raster.hpp"
+
+#include <gtest/gtest.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace flotsam {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string utm_33n() {
+  OGRSpatialReference srs;
+  EXPECT_EQ(srs.importFromEPSG(32633), OGRERR_NONE);
+  char* wkt = nullptr;
+  srs.exportToWkt(&wkt);
+  std::string text = wkt;
+  CPLFree(wkt);
+  return text;
+}
+
+/// A north-up grid of 7 x 5 pixels of 2 m x 3 m with its corner at (500000, 4100015) m.
+RasterGrid small_grid() {
+  RasterGrid g;
+  g.columns = 7;
+  g.rows = 5;
+  g.transform = {500000.0, 2.0, 0.0, 4100015.0, 0.0, -3.0};
+  return g;
+}
+
+Raster sampled(const RasterGrid& g, double (*f)(const Vec2&)) {
+  std::vector<double> v(static_cast<std::size_t>(g.columns) * g.rows);
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.columns; ++c)
+      v[static_cast<std::size_t>(r) * g.columns + c] = f(g.centre(c, r));
+  return Raster(g, v, -9999.0);
+}
+
+double plane(const Vec2& p) {
+  return 3.0 + 0.02 * (p.x() - 500000.0) - 0.05 * (p.y() - 4100000.0);
+}
+double patch(const Vec2& p) {  // bilinear: a x y term as well
+  const double x = p.x() - 500000.0, y = p.y() - 4100000.0;
+  return 1.0 + 0.3 * x - 0.2 * y + 0.01 * x * y;
+}
+
+TEST(Raster, BilinearIsExactOnAPlaneAndABilinearPatchOverTheWholeExtent) {
+  const RasterGrid g = small_grid();
+  const Raster a = sampled(g, plane), b = sampled(g, patch);
+  double worst_plane = 0.0, worst_patch = 0.0;
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 30; ++j) {  // corner to corner, edge bands included
+      const Vec2 p(500000.0 + 14.0 * i / 40, 4100015.0 - 15.0 * j / 30);
+      worst_plane = std::max(worst_plane, std::abs(*a.bilinear(p) - plane(p)));
+      worst_patch = std::max(worst_patch, std::abs(*b.bilinear(p) - patch(p)));
+    }
+  EXPECT_LE(worst_plane, 1e-12);
+  EXPECT_LE(worst_patch, 1e-11);
+}
+
+TEST(Raster, NoValueOutsideTheExtentOrNextToNodata) {
+  RasterGrid g = small_grid();
+  std::vector<double> v(35, 1.0);
+  v[2 * 7 + 3] = -9999.0;  // column 3, row 2
+  const Raster r(g, v, -9999.0);
+  EXPECT_FALSE(r.bilinear({499999.9, 4100010.0}));
+  EXPECT_FALSE(r.bilinear({500001.0, 4100015.1}));
+  EXPECT_FALSE(r.bilinear(g.centre(3, 2) + Vec2(0.5, 0.5)));
+  EXPECT_EQ(*r.bilinear(g.centre(0, 0)), 1.0);
+  EXPECT_FALSE(r.nearest(g.centre(3, 2)));
+  EXPECT_EQ(*r.nearest(g.centre(4, 2)), 1.0);
+}
+
+TEST(Raster, GeoTiffRoundTripKeepsValuesGeoreferencingAndCoordinateSystem) {
+  const fs::path dir = fs::temp_directory_path() / "flotsam_raster_test";
+  fs::create_directories(dir);
+  RasterGrid g = small_grid();
+  g.crs_wkt = utm_33n();
+  std::vector<double> v(35);
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = 0.125 * k - 1.0;
+  v[10] = std::nan("");  // written as nodata
+  const std::string path = (dir / "round_trip.tif").string();
+  write_geotiff(path, g, v);
+  const Raster back = Raster::read(path, "test");
+  EXPECT_EQ(back.grid().columns, 7);
+  EXPECT_EQ(back.grid().rows, 5);
+  EXPECT_EQ(back.grid().transform, g.transform);
+  OGRSpatialReference written, read;
+  written.importFromWkt(g.crs_wkt.c_str());
+  read.importFromWkt(back.grid().crs_wkt.c_str());
+  EXPECT_TRUE(read.IsSame(&written));
+  EXPECT_EQ(read.GetEPSGGeogCS(), 4326);
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 7; ++c) {
+      const std::size_t k = static_cast<std::size_t>(r) * 7 + c;
+      if (k == 10)
+        EXPECT_TRUE(back.is_nodata(back.at(c, r)));
+      else
+        EXPECT_EQ(back.at(c, r), v[k]);
+    }
+  fs::remove_all(dir);
+}
+
+TEST(Raster, CoveringGridAlignsToTheResolution) {
+  const RasterGrid g = RasterGrid::covering({10.3, -4.1}, {29.9, 5.0}, 2.0, "");
+  EXPECT_EQ(g.transform[0], 10.0);
+  EXPECT_EQ(g.transform[3], 6.0);
+  EXPECT_EQ(g.columns, 10);  // 10 .. 30
+  EXPECT_EQ(g.rows, 6);      // 6 .. -6
+  EXPECT_EQ(g.centre(0, 0), Vec2(11.0, 5.0));
+}
+
+TEST(Raster, ReadErrorsNameTheOriginAndTheFile) {
+  const fs::path dir = fs::temp_directory_path() / "flotsam_raster_errors";
+  fs::create_directories(dir);
+  const auto message = [](const std::string& path) {
+    try {
+      Raster::read(path, "case.yaml:7: bed.raster");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(
+      message((dir / "none.tif").string()),
+      "case.yaml:7: bed.raster: the raster '" + (dir / "none.tif").string() + "' does not exist");
+  { std::ofstream((dir / "text.tif").string()) << "not a raster"; }
+  EXPECT_NE(message((dir / "text.tif").string()).find("is not a raster GDAL can read"),
+            std::string::npos);
+  RasterGrid geographic = small_grid();
+  geographic.transform = {10.0, 0.001, 0.0, 45.0, 0.0, -0.001};
+  OGRSpatialReference wgs84;
+  wgs84.importFromEPSG(4326);
+  char* wkt = nullptr;
+  wgs84.exportToWkt(&wkt);
+  geographic.crs_wkt = wkt;
+  CPLFree(wkt);
+  write_geotiff((dir / "degrees.tif").string(), geographic, std::vector<double>(35, 1.0));
+  EXPECT_NE(message((dir / "degrees.tif").string()).find("is in geographic coordinates (degrees)"),
+            std::string::npos);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace flotsam
