@@ -205,10 +205,7 @@ void Simulation::open_output(const std::vector<double>* output_times) {
                          : std::make_unique<RunOutput>(
                                output_directory(), case_.name, mesh_, open_groups(),
                                options_.overwrite || case_.output.overwrite, case_.file);
-  // The case's coordinate system: output.rasters.crs, else the terrain raster's.
-  const std::string crs = !case_.output.raster_crs.empty() ? case_.output.raster_crs
-                          : case_.bed.raster               ? case_.bed.raster->grid().crs_wkt
-                                                           : std::string();
+  const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;
   Vec2 lo = mesh_.nodes.front(), hi = lo;  // the envelopes' rasters cover the mesh

@@ -1,30 +1,20 @@
 #include "geo/raster.hpp"
 
-#include <gdal_priv.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 
 #include "core/error.hpp"
+#include "geo/gdal_support.hpp"
 
 namespace flotsam {
 
 namespace {
 
-void register_drivers() {
-  static const bool registered = [] {
-    GDALAllRegister();
-    return true;
-  }();
-  (void)registered;
-}
-
-struct DatasetCloser {
-  void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
+using gdal::Dataset;
+using gdal::register_drivers;
+using gdal::wkt_of;
 
 /// The first index of the two pixel centres used along one axis, and the fraction between them
 /// (outside [0, 1] in the half-pixel edge bands: linear extension).
@@ -32,14 +22,6 @@ struct Axis {
   int first = 0;
   double fraction = 0.0;
 };
-
-std::string wkt_of(const OGRSpatialReference& srs) {
-  char* wkt = nullptr;
-  srs.exportToWkt(&wkt);
-  std::string text = wkt ? wkt : "";
-  CPLFree(wkt);
-  return text;
-}
 
 Axis axis_at(double pixel, int count) {
   if (count == 1) return {0, 0.0};
@@ -165,6 +147,12 @@ std::string coordinate_system_wkt(const std::string& definition, const std::stri
         "metres",
         origin, definition);
   return wkt_of(srs);
+}
+
+bool same_coordinate_system(const std::string& a, const std::string& b) {
+  OGRSpatialReference sa, sb;
+  return sa.importFromWkt(a.c_str()) == OGRERR_NONE && sb.importFromWkt(b.c_str()) == OGRERR_NONE &&
+         sa.IsSame(&sb);
 }
 
 void write_geotiff(const std::string& path, const RasterGrid& grid,

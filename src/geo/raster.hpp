@@ -65,6 +65,9 @@ class Raster {
 /// naming `origin` when GDAL does not know it or it is geographic (degrees, not metres).
 std::string coordinate_system_wkt(const std::string& definition, const std::string& origin);
 
+/// Two coordinate systems (WKT) are the same (GDAL's IsSame).
+bool same_coordinate_system(const std::string& a, const std::string& b);
+
 /// Writes `values` (row-major, grid.columns x grid.rows) as a single-band Float64 GeoTIFF with
 /// the grid's georeferencing and coordinate system; NaN values are written as `nodata`.
 void write_geotiff(const std::string& path, const RasterGrid& grid,

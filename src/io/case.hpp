@@ -191,7 +191,6 @@ struct OutputConfig {
   double wet_depth = 0.01;         // [m] deeper counts as wet for the flood envelopes' arrival time
                                    // and wet duration (finite-volume engine)
   double raster_resolution = 0.0;  // [m] pixel size of the envelopes' GeoTIFF rasters; 0: none
-  std::string raster_crs;          // their coordinate system (WKT); empty: the bed raster's
 };
 
 struct Case {
@@ -203,6 +202,8 @@ struct Case {
   TimeConfig time;
   BodiesConfig bodies;
   OutputConfig output;
+  std::string crs_wkt;  // the coordinate system of the case's coordinates (WKT): the key crs, else
+                        // the terrain raster's, else mesh.region's files'; empty: none
 };
 
 }  // namespace flotsam

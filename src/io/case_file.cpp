@@ -89,12 +89,13 @@ PolygonGeometry read_polygon(const YamlMap& m) {
   return g;
 }
 
-MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder) {
+MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder,
+                     std::string& crs_wkt) {
   MeshSource mesh;
-  const std::string kind = m.only_one_of({"file", "channel", "bend", "polygon"});
+  const std::string kind = m.only_one_of({"file", "channel", "bend", "polygon", "region"});
   if (kind.empty()) {
     m.check_keys();  // a misspelt kind is reported as such
-    m.fail("expected one of: file, channel, bend, polygon");
+    m.fail("expected one of: file, channel, bend, polygon, region");
   }
   if (kind == "file") {
     const YamlValue file = m.get("file");
@@ -114,11 +115,37 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder)
   } else if (kind == "bend") {
     mesh.kind = MeshSource::Kind::bend;
     mesh.bend = read_bend(m.get("bend").map());
-  } else {
+  } else if (kind == "polygon") {
     mesh.kind = MeshSource::Kind::polygon;
     mesh.polygon = read_polygon(m.get("polygon").map());
+  } else {
+    mesh.kind = MeshSource::Kind::region;
+    mesh.region = read_region(m.get("region").map(), case_folder, crs_wkt);
   }
   return mesh;
+}
+
+/// mesh.region.steep: where the terrain raster's slope exceeds `slope`, the element size shrinks
+/// as slope / |grad z_b| down to `mesh_size` (central differences over one pixel).
+void read_steep_refinement(const YamlMap& mesh, const BedConfig& bed, RegionGeometry& region) {
+  const auto steep = mesh.map("region").find("steep");
+  if (!steep) return;
+  if (!bed.raster) steep->fail("refining where the terrain is steep needs a terrain: bed.raster");
+  const YamlMap m = steep->map();
+  const double slope =
+      m.get("slope", "the slope [-] above which elements shrink").number(Range::positive());
+  const double smallest =
+      m.get("mesh_size", "the smallest element size [m]").number(Range::positive());
+  const double far = region.mesh_size;
+  const std::shared_ptr<const Raster> raster = bed.raster;
+  const double h = std::abs(raster->grid().transform[1]);  // [m] one pixel
+  region.size_at = [raster, slope, smallest, far, h](const Vec2& p) {
+    const auto zx0 = raster->bilinear(p - Vec2(h, 0)), zx1 = raster->bilinear(p + Vec2(h, 0));
+    const auto zy0 = raster->bilinear(p - Vec2(0, h)), zy1 = raster->bilinear(p + Vec2(0, h));
+    if (!zx0 || !zx1 || !zy0 || !zy1) return far;
+    const double gradient = Vec2(*zx1 - *zx0, *zy1 - *zy0).norm() / (2.0 * h);  // [-]
+    return gradient > slope ? std::max(smallest, far * slope / gradient) : far;
+  };
 }
 
 // ---- bed ----------------------------------------------------------------------------------
@@ -236,12 +263,9 @@ OutputConfig read_output(const YamlMap& m) {
   output.probes = read_probes(m);
   output.probe_interval = m.number("probe_interval", output.probe_interval, Range::non_negative());
   output.wet_depth = m.number("wet_depth", output.wet_depth, Range::positive());
-  if (const auto rasters = m.find("rasters")) {
-    const YamlMap r = rasters->map();
-    output.raster_resolution = r.get("resolution", "the pixel size [m]").number(Range::positive());
-    if (const auto crs = r.find("crs"))
-      output.raster_crs = coordinate_system_wkt(crs->text(), crs->origin());
-  }
+  if (const auto rasters = m.find("rasters"))
+    output.raster_resolution =
+        rasters->map().get("resolution", "the pixel size [m]").number(Range::positive());
   return output;
 }
 
@@ -264,6 +288,34 @@ std::string read_name(const YamlMap& root, const std::string& file_name) {
   return name;
 }
 
+/// The case's coordinate system: the key crs, else the terrain raster's, else the region's
+/// vector files'; two of them that differ is an error naming the key and the files.
+std::string case_coordinate_system(const Case& c, const std::string& region_crs,
+                                   const YamlMap& root) {
+  const std::string raster_crs = c.bed.raster ? c.bed.raster->grid().crs_wkt : "";
+  std::string crs;
+  std::string from;  // where crs came from, for messages
+  if (const auto given = root.find("crs")) {
+    crs = coordinate_system_wkt(given->text(), given->origin());
+    from = "the key crs";
+  }
+  for (const auto& [other, what] :
+       {std::pair{raster_crs,
+                  fmt::format("the terrain raster '{}'", c.bed.raster ? c.bed.raster->path() : "")},
+        std::pair{region_crs, std::string("mesh.region's outline")}}) {
+    if (other.empty()) continue;
+    if (crs.empty()) {
+      crs = other, from = what;
+    } else if (!same_coordinate_system(crs, other)) {
+      root.fail(
+          fmt::format("{} and {} are in different coordinate systems; reproject one of "
+                      "them (gdalwarp, ogr2ogr)",
+                      from, what));
+    }
+  }
+  return crs;
+}
+
 }  // namespace
 
 Case parse_case(const std::string& text, const std::string& file_name) {
@@ -273,12 +325,16 @@ Case parse_case(const std::string& text, const std::string& file_name) {
   c.file = file_name;
   c.name = read_name(root, file_name);
   const std::filesystem::path case_folder = std::filesystem::path(file_name).parent_path();
-  c.mesh = read_mesh(root.get("mesh", "where the mesh comes from").map(), case_folder);
+  std::string region_crs;
+  c.mesh = read_mesh(root.get("mesh", "where the mesh comes from").map(), case_folder, region_crs);
   c.bed = read_bed(root.map("bed"), case_folder);
+  if (c.mesh.kind == MeshSource::Kind::region)
+    read_steep_refinement(root.get("mesh").map(), c.bed, c.mesh.region);
   c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map());
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
   c.output = read_output(root.map("output"));
+  c.crs_wkt = case_coordinate_system(c, region_crs, root);
   if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)
     root.map("output").get("rasters").fail(
         "the flood envelopes and their rasters come from the finite-volume engine; set "

@@ -1,5 +1,6 @@
 #pragma once
 // Geometries the mesh generator knows (issue 2 item 4), and where a case's mesh comes from.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,12 +50,51 @@ struct PolygonGeometry {
   double mesh_size = 1.0;           // [m]
 };
 
+/// A ring of points with the name that messages give it ("town.gpkg, layer 'buildings',
+/// feature 17", or "mesh.region.outline" for points written in the case).
+struct NamedRing {
+  std::vector<Vec2> points;  // [m], either orientation, not closed (last != first)
+  std::string name;
+};
+
+/// A polyline that names the outline's sides along it (an inflow, an outflow).
+struct BoundaryLine {
+  std::string group;
+  std::vector<Vec2> points;  // [m]
+  std::string name;          // for messages
+};
+
+/// A domain from geodata (mesh.region, docs/case-format.md): an outline with holes for buildings
+/// (one wall group "buildings") and piers (circles or outlines, groups pier_1, pier_2, ...),
+/// named boundary lines along the outline, sizes refined near buildings and piers and where the
+/// terrain is steep. Checked before meshing: every ring simple, holes inside the outline and
+/// apart from each other (errors name the features); vertices closer than merge_distance are
+/// merged and buildings smaller than min_building_area dropped (slivers are not meshed).
+struct RegionGeometry {
+  NamedRing outline;
+  std::vector<NamedRing> islands;  // holes of the outline itself (walls in default_group)
+  std::vector<BoundaryLine> lines;
+  std::string default_group = "bank";  // outline sides no line names
+  std::vector<NamedRing> buildings;
+  std::vector<Pier> piers;
+  std::vector<NamedRing> pier_outlines;        // pier_<piers.size() + 1>, ...
+  double mesh_size = 10.0;                     // [m] far from buildings and piers
+  double building_mesh_size = 2.0;             // [m] on the buildings' walls
+  double pier_mesh_size = 1.0;                 // [m] on the piers
+  double refine_distance = 20.0;               // [m] over which the size grows back to mesh_size
+  double merge_distance = 0.1;                 // [m] consecutive vertices closer are merged
+  double min_building_area = 1.0;              // [m^2] smaller footprints are dropped
+  std::function<double(const Vec2&)> size_at;  // an extra bound on the size [m] (steep
+                                               // terrain), or empty
+};
+
 struct MeshSource {
-  enum class Kind { file, channel, bend, polygon } kind = Kind::channel;
+  enum class Kind { file, channel, bend, polygon, region } kind = Kind::channel;
   std::string file;  // Gmsh .msh (2.2 or 4.1, ASCII or binary) when kind == file
   ChannelGeometry channel;
   BendGeometry bend;
   PolygonGeometry polygon;
+  RegionGeometry region;
 };
 
 }  // namespace flotsam

@@ -21,95 +21,15 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "mesh/gmsh_model.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/msh_reader.hpp"
+#include "mesh/plane_geometry.hpp"
 
 namespace flotsam {
 namespace {
 
 namespace geo = gmsh::model::geo;
-
-constexpr int frontal_delaunay = 6;    // Gmsh Mesh.Algorithm
-constexpr int distance_samples = 200;  // [-] points per pier arc for the Distance field
-
-int add_point(const Vec2& p) {
-  return geo::addPoint(p.x(), p.y(), 0.0);
-}
-
-/// Boundary curves by group name, in the order the names first appear.
-class BoundaryGroups {
- public:
-  void add(const std::string& name, int curve) {
-    auto found = std::find_if(groups_.begin(), groups_.end(),
-                              [&](const auto& group) { return group.first == name; });
-    if (found == groups_.end()) {
-      groups_.push_back({name, {}});
-      found = groups_.end() - 1;
-    }
-    found->second.push_back(curve);
-  }
-  /// Physical groups for the curves and the surface; after geo::synchronize.
-  void create(int surface) const {
-    for (const auto& [name, curves] : groups_)
-      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, curves), name);
-    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "water");
-  }
-
- private:
-  std::vector<std::pair<std::string, std::vector<int>>> groups_;
-};
-
-/// A circle arc of at most a quarter turn between two points on a circle around `centre`.
-int add_arc(int from, int centre, int to) {
-  return geo::addCircleArc(from, centre, to);
-}
-
-void set_common_options(double mesh_size) {
-  gmsh::option::setNumber("Mesh.Algorithm", frontal_delaunay);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.SecondOrderLinear", 0);  // mid nodes on the curves
-  gmsh::option::setNumber("Mesh.HighOrderOptimize", 0);
-}
-
-void write_current_model(const std::string& msh_path, const MshFormat& format) {
-  if (format.version != 2.2 && format.version != 4.1)
-    throw_input_error("{}: MSH format version {} is not supported; expected 2.2 or 4.1", msh_path,
-                      format.version);
-  try {
-    gmsh::option::setNumber("Mesh.MshFileVersion", format.version);
-    gmsh::option::setNumber("Mesh.Binary", format.binary ? 1 : 0);
-    gmsh::option::setNumber("Mesh.SaveAll", 0);  // only elements in physical groups
-    gmsh::write(msh_path);
-  } catch (...) {
-    throw_input_error("{}: Gmsh cannot write the mesh: {}", msh_path, current_gmsh_error());
-  }
-  if (!std::ifstream(msh_path).good())
-    throw_input_error("{}: the mesh file could not be written (does its folder exist?)", msh_path);
-}
-
-/// Steps 2-4 after the boundary is built: surface, groups, mesh, write, extract.
-RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
-                           const BoundaryGroups& groups, const std::string& msh_path,
-                           const MshFormat& format) {
-  try {
-    const int surface = geo::addPlaneSurface(loops);
-    geo::synchronize();
-    groups.create(surface);
-    gmsh::model::mesh::generate(2);
-    gmsh::model::mesh::setOrder(2);
-  } catch (...) {
-    throw_input_error("{}: Gmsh cannot mesh the geometry: {}", source, current_gmsh_error());
-  }
-  if (!msh_path.empty()) write_current_model(msh_path, format);
-  return raw_mesh_from_gmsh_model(source);
-}
-
-void require_positive(const std::string& source, const char* key, double value) {
-  if (!(value > 0)) throw_input_error("{}: {} must be positive; got {}", source, key, value);
-}
 
 // ---- channel with piers ----------------------------------------------------------------------
 
@@ -144,50 +64,12 @@ void check_channel(const ChannelGeometry& channel, const std::string& source) {
   }
 }
 
-/// A full circle as four quarter arcs, counter-clockwise from angle 0.
-std::vector<int> add_circle(const Vec2& centre, double radius) {
-  const int c = add_point(centre);
-  std::vector<int> points;
-  for (const Vec2& direction : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
-    points.push_back(add_point(centre + radius * direction));
-  std::vector<int> arcs;
-  for (int k = 0; k < 4; ++k) arcs.push_back(add_arc(points[k], c, points[(k + 1) % 4]));
-  return arcs;
-}
-
 void add_pier_size_field(const ChannelGeometry& channel, const std::vector<int>& pier_curves) {
-  namespace field = gmsh::model::mesh::field;
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "CurvesList", {pier_curves.begin(), pier_curves.end()});
-  field::setNumber(distance, "NNodesByEdge", distance_samples);
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "LcMin", channel.pier_mesh_size);
-  field::setNumber(threshold, "LcMax", channel.mesh_size);
-  field::setNumber(threshold, "DistMin", 0.0);
-  field::setNumber(threshold, "DistMax", channel.refine_distance);
-  field::setAsBackgroundMesh(threshold);
+  gmsh::model::mesh::field::setAsBackgroundMesh(add_distance_size_field(
+      pier_curves, channel.pier_mesh_size, channel.mesh_size, channel.refine_distance));
 }
 
 // ---- polygon -----------------------------------------------------------------------------------
-
-/// Orientation of c with respect to the line a -> b: > 0 left, < 0 right, 0 on it.
-double orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
-  return cross(b - a, c - a);
-}
-
-bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
-  return orientation(a, b, p) == 0 && (p - a).dot(p - b) <= 0;
-}
-
-/// Closed segments a-b and c-d share a point.
-bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
-  const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-    return true;
-  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
-}
 
 void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
   const auto& p = polygon.points;
@@ -206,24 +88,13 @@ void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
         throw_input_error("{}: points {} and {} coincide at ({}, {}) m", source, j + 1, i + 1,
                           p[i].x(), p[i].y());
   }
-  // Sides i (p[i] -> p[i+1]) and j: neighbours share one end and must not fold back onto each
-  // other; other sides must not meet at all.
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const Vec2 &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
-      bool meet = false;
-      if (j == i + 1)
-        meet = on_segment(a, b, d) || on_segment(c, d, a);
-      else if (i == 0 && j == n - 1)
-        meet = on_segment(c, d, b) || on_segment(a, b, c);
-      else
-        meet = segments_meet(a, b, c, d);
-      if (meet)
-        throw_input_error(
-            "{}: the polygon intersects itself: side {} (points {} to {}) meets side {} (points "
-            "{} to {})",
-            source, i + 1, i + 1, (i + 1) % n + 1, j + 1, j + 1, (j + 1) % n + 1);
-    }
+  if (const auto crossing = ring_self_crossing(p)) {
+    const auto [i, j] = *crossing;
+    throw_input_error(
+        "{}: the polygon intersects itself: side {} (points {} to {}) meets side {} (points {} "
+        "to {})",
+        source, i + 1, i + 1, (i + 1) % n + 1, j + 1, j + 1, (j + 1) % n + 1);
+  }
 }
 
 }  // namespace
@@ -335,6 +206,8 @@ Mesh generate_mesh(const MeshSource& source, const std::string& msh_path, const 
       return build_mesh(generate_bend_mesh(source.bend, msh_path, format));
     case MeshSource::Kind::polygon:
       return build_mesh(generate_polygon_mesh(source.polygon, msh_path, format));
+    case MeshSource::Kind::region:
+      return build_mesh(generate_region_mesh(source.region, msh_path, format));
   }
   throw_input_error("mesh source: unknown kind {}", static_cast<int>(source.kind));
 }

@@ -24,12 +24,14 @@ struct MshFormat {
 Mesh generate_mesh(const MeshSource& source, const std::string& msh_path = "",
                    const MshFormat& format = {});
 
-/// The three generators behind generate_mesh, returning the lists build_mesh takes.
+/// The generators behind generate_mesh, returning the lists build_mesh takes.
 RawMesh generate_channel_mesh(const ChannelGeometry& channel, const std::string& msh_path = "",
                               const MshFormat& format = {});
 RawMesh generate_bend_mesh(const BendGeometry& bend, const std::string& msh_path = "",
                            const MshFormat& format = {});
 RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string& msh_path = "",
                               const MshFormat& format = {});
+RawMesh generate_region_mesh(const RegionGeometry& region, const std::string& msh_path = "",
+                             const MshFormat& format = {});
 
 }  // namespace flotsam

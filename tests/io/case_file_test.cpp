@@ -424,11 +424,11 @@ TEST(CaseFile, BedRasterIsReadRelativeToTheCaseWithAnOptionalEdit) {
 TEST(CaseFile, FloodEnvelopeRastersAndTheirCoordinateSystem) {
   const Case c = parse_case(
       edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
-          "output:\n  wet_depth: 0.05\n  rasters: {resolution: 2, crs: \"EPSG:32633\"}\n",
+          "output:\n  wet_depth: 0.05\n  rasters: {resolution: 2}\ncrs: \"EPSG:32633\"\n",
       "case.yaml");
   EXPECT_EQ(c.output.wet_depth, 0.05);
   EXPECT_EQ(c.output.raster_resolution, 2.0);
-  EXPECT_THAT(c.output.raster_crs, HasSubstr("UTM zone 33N"));
+  EXPECT_THAT(c.crs_wkt, HasSubstr("UTM zone 33N"));
   EXPECT_THAT(error_of(appended("output:\n  rasters: {resolution: 2}\n")),
               HasSubstr("case.yaml:13: output.rasters: the flood envelopes and their rasters come "
                         "from the finite-volume engine; set flow.engine: fv"));
@@ -436,11 +436,11 @@ TEST(CaseFile, FloodEnvelopeRastersAndTheirCoordinateSystem) {
                        "output:\n  rasters: {resolution: 0}\n"),
               HasSubstr("case.yaml:14: output.rasters.resolution: expected a number > 0"));
   EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
-                       "output:\n  rasters: {resolution: 1, crs: \"EPSG:4326\"}\n"),
-              HasSubstr("output.rasters.crs: 'EPSG:4326' is a geographic coordinate system"));
+                       "crs: \"EPSG:4326\"\n"),
+              HasSubstr("case.yaml:13: crs: 'EPSG:4326' is a geographic coordinate system"));
   EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
-                       "output:\n  rasters: {resolution: 1, crs: \"nowhere\"}\n"),
-              HasSubstr("output.rasters.crs: 'nowhere' is not a coordinate system GDAL knows"));
+                       "crs: nowhere\n"),
+              HasSubstr("case.yaml:13: crs: 'nowhere' is not a coordinate system GDAL knows"));
 }
 
 TEST(CaseFile, InitialStateMayBeFormulas) {

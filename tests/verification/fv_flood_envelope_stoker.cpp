@@ -64,7 +64,7 @@ TEST(FvFloodEnvelope, StokerMaximaArrivalAndDurationMatchTheExactSolutionAndTheG
   c.output.wet_depth = 0.5 * (h_r + stoker.h_m);
   c.output.probes = {{"gauge", Vec2(x_gauge, 0.2), 0}};
   c.output.raster_resolution = 0.04;
-  c.output.raster_crs = coordinate_system_wkt("EPSG:32633", "test");
+  c.crs_wkt = coordinate_system_wkt("EPSG:32633", "test");
   Simulation run(c, test::dam_break_mesh(1),
                  {.output_directory = dir, .overwrite = true, .progress = false});
   run.run();
@@ -93,7 +93,7 @@ TEST(FvFloodEnvelope, StokerMaximaArrivalAndDurationMatchTheExactSolutionAndTheG
 
   const Raster max_depth = Raster::read((dir / "stoker_max_depth.tif").string(), "test");
   OGRSpatialReference written, read;
-  written.importFromWkt(c.output.raster_crs.c_str());
+  written.importFromWkt(c.crs_wkt.c_str());
   read.importFromWkt(max_depth.grid().crs_wkt.c_str());
   EXPECT_TRUE(read.IsSame(&written));
   EXPECT_EQ(max_depth.grid().transform[0], 0.0);
