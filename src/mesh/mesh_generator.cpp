@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/msh_reader.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 namespace {
@@ -171,59 +172,19 @@ void add_pier_size_field(const ChannelGeometry& channel, const std::vector<int>&
 
 // ---- polygon -----------------------------------------------------------------------------------
 
-/// Orientation of c with respect to the line a -> b: > 0 left, < 0 right, 0 on it.
-double orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
-  return cross(b - a, c - a);
-}
-
-bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
-  return orientation(a, b, p) == 0 && (p - a).dot(p - b) <= 0;
-}
-
-/// Closed segments a-b and c-d share a point.
-bool segments_meet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
-  const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-    return true;
-  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
-}
-
 void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
   const auto& p = polygon.points;
   const std::size_t n = p.size();
-  if (n < 3) throw_input_error("{}: a polygon needs at least 3 points; got {}", source, n);
+  if (const std::string defect = polygon_defect(p); !defect.empty())
+    throw_input_error("{}: {}", source, defect);
   if (polygon.groups.size() != n)
     throw_input_error("{}: {} points make {} sides, but {} group names are given (one per side)",
                       source, n, n, polygon.groups.size());
   require_positive(source, "mesh_size", polygon.mesh_size);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     if (polygon.groups[i].empty())
       throw_input_error("{}: side {} (points {} to {}) has an empty group name", source, i + 1,
                         i + 1, (i + 1) % n + 1);
-    for (std::size_t j = 0; j < i; ++j)
-      if (p[i] == p[j])
-        throw_input_error("{}: points {} and {} coincide at ({}, {}) m", source, j + 1, i + 1,
-                          p[i].x(), p[i].y());
-  }
-  // Sides i (p[i] -> p[i+1]) and j: neighbours share one end and must not fold back onto each
-  // other; other sides must not meet at all.
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const Vec2 &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
-      bool meet = false;
-      if (j == i + 1)
-        meet = on_segment(a, b, d) || on_segment(c, d, a);
-      else if (i == 0 && j == n - 1)
-        meet = on_segment(c, d, b) || on_segment(a, b, c);
-      else
-        meet = segments_meet(a, b, c, d);
-      if (meet)
-        throw_input_error(
-            "{}: the polygon intersects itself: side {} (points {} to {}) meets side {} (points "
-            "{} to {})",
-            source, i + 1, i + 1, (i + 1) % n + 1, j + 1, j + 1, (j + 1) % n + 1);
-    }
 }
 
 }  // namespace
