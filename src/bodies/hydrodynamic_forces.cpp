@@ -51,6 +51,15 @@ double ganser_drag_coefficient(double Re, double K1, double K2) {
   return K2 * (24.0 * inv_R * (1.0 + 0.1118 * R_power) + 0.4305 / (1.0 + 3305.0 * inv_R));
 }
 
+double drag_coefficient(const BodySet& bodies, int i, double S_eff, double speed,
+                        const ForceModel& model) {
+  if (model.physics.drag_law == DragLaw::constant) return model.physics.drag_coefficient;
+  const double d_v = bodies.equal_volume_diameter[i];
+  const double d_n = std::sqrt(4.0 * S_eff / pi);  // equal projected-area diameter (P-18)
+  const double K1 = 1.0 / (d_n / (3.0 * d_v) + bodies.ganser_K1_term[i]);  // (P-18)
+  return ganser_drag_coefficient(speed * d_v / model.nu, K1, bodies.ganser_K2[i]);
+}
+
 double rotation_torque(double rho, double C_r, double h_s, double L, double omega, double omega_f) {
   const double spin = omega - omega_f;  // (M-8)
   return -rho * C_r * h_s * (L * L * L * L / 64.0) * std::abs(spin) * spin;
@@ -81,13 +90,7 @@ Drag slice_drag(const BodySet& bodies, int i, const BodyPose& pose, const Slice&
   const double sin_alpha = std::abs(cross(axis, u_rel)) * inv_speed;
   const double S_eff =
       effective_area(bodies.shape[i], bodies.length[i], bodies.width[i], h_s, cos_alpha, sin_alpha);
-  double C_d = model.physics.drag_coefficient;
-  if (model.physics.drag_law == DragLaw::ganser) {
-    const double d_v = bodies.equal_volume_diameter[i];
-    const double d_n = std::sqrt(4.0 * S_eff / pi);  // equal projected-area diameter (P-18)
-    const double K1 = 1.0 / (d_n / (3.0 * d_v) + bodies.ganser_K1_term[i]);  // (P-18)
-    C_d = ganser_drag_coefficient(speed * d_v / model.nu, K1, bodies.ganser_K2[i]);
-  }
+  const double C_d = drag_coefficient(bodies, i, S_eff, speed, model);
   Drag drag;
   drag.force = (slice.fraction * 0.5 * model.rho * C_d * S_eff * speed) * u_rel;  // (M-6)
   Vec2 P = slice.point;

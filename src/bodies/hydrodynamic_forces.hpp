@@ -38,6 +38,11 @@ double ganser_K1_factor(double d_n, double d_v, double Theta);
 /// Re = |u_rel| d_v / nu.
 double ganser_drag_coefficient(double Re, double K1, double K2);
 
+/// C_d of body i for the wetted projected area S_eff [m^2] at the relative speed |u_rel| [m/s]:
+/// the run's constant, or Ganser's (P-18) with d_n = sqrt(4 S_eff/pi), Re = |u_rel| d_v / nu.
+double drag_coefficient(const BodySet& bodies, int i, double S_eff, double speed,
+                        const ForceModel& model);
+
 /// |GP| of (M-7) [m]: reach = 0.1 L (1 - exp(3 (1 - L/l))), times |cos alpha|^3.
 inline double pressure_centre_offset(double reach, double cos_alpha) {
   return reach * cos_alpha * cos_alpha * cos_alpha;

@@ -1,12 +1,14 @@
 #include "bodies/release.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 
@@ -23,13 +25,25 @@ double uniform(std::mt19937_64& random, double lo, double hi) {
   return lo + (hi - lo) * unit;
 }
 
-void check_range(const PlacementCheck& check, int r, const char* key, double lo, double hi,
-                 bool positive) {
-  if (positive && !(lo > 0.0))
-    throw_input_error("{}: releases[{}]: {}_min = {} must be positive", where(check), r, key, lo);
+/// `at` names the release ("c.yaml: releases[2]").
+void check_range(const std::string& at, const char* key, double lo, double hi, bool positive) {
+  if (positive && !(lo > 0.0)) throw_input_error("{}: {}_min = {} must be positive", at, key, lo);
   if (!(lo <= hi))
-    throw_input_error("{}: releases[{}]: {}_min = {} is larger than {}_max = {}", where(check), r,
-                      key, lo, key, hi);
+    throw_input_error("{}: {}_min = {} is larger than {}_max = {}", at, key, lo, key, hi);
+}
+
+/// True when the rectangles of two bodies (centre, long axis e, half extents h) overlap: no
+/// separating axis among the four sides' normals. Touching is not overlapping.
+bool rectangles_overlap(const Vec2& centre_a, const Vec2& e_a, const Vec2& h_a,
+                        const Vec2& centre_b, const Vec2& e_b, const Vec2& h_b) {
+  const Vec2 d = centre_b - centre_a;
+  const Vec2 axes[4] = {e_a, perp(e_a), e_b, perp(e_b)};
+  for (const Vec2& n : axes) {
+    const double reach_a = h_a.x() * std::abs(e_a.dot(n)) + h_a.y() * std::abs(perp(e_a).dot(n));
+    const double reach_b = h_b.x() * std::abs(e_b.dot(n)) + h_b.y() * std::abs(perp(e_b).dot(n));
+    if (std::abs(d.dot(n)) >= reach_a + reach_b) return false;  // [m]
+  }
+  return true;
 }
 
 }  // namespace
@@ -64,6 +78,21 @@ void check_body_placement(const BodySpec& spec, const FlowField& flow, double t,
   }
 }
 
+void check_clear_of_bodies(const BodySpec& spec, const BodySet& bodies, const PlacementCheck& check,
+                           const std::string& what) {
+  const Vec2 e{std::cos(spec.angle), std::sin(spec.angle)};
+  const Vec2 h{0.5 * spec.length, 0.5 * spec.width};
+  for (int i = 0; i < bodies.size(); ++i) {
+    if (bodies.state[i] == BodyState::gone) continue;
+    const Vec2 h_i = bodies.half_extents(i);
+    if ((bodies.position[i] - spec.position).norm() >= h.norm() + h_i.norm()) continue;
+    if (rectangles_overlap(spec.position, e, h, bodies.position[i], bodies.axis(i), h_i))
+      throw_input_error("{}: {} at ({}, {}): overlaps body {} at ({}, {})", where(check), what,
+                        spec.position.x(), spec.position.y(), bodies.id[i], bodies.position[i].x(),
+                        bodies.position[i].y());
+  }
+}
+
 int add_explicit_bodies(BodySet& bodies, const std::vector<BodySpec>& specs, const FlowField& flow,
                         double t, const PlacementCheck& check) {
   const int first = bodies.size();
@@ -79,20 +108,76 @@ int add_explicit_bodies(BodySet& bodies, const std::vector<BodySpec>& specs, con
 
 Releaser::Releaser(std::vector<Release> releases, const PlacementCheck& check) : check_(check) {
   for (std::size_t k = 0; k < releases.size(); ++k) {
+    lines_.push_back({releases[k], std::mt19937_64(releases[k].seed), 0});
     const Release& r = releases[k];
     const int ri = static_cast<int>(k);
-    if (!(r.rate > 0.0))
-      throw_input_error("{}: releases[{}]: rate = {} bodies/min must be positive", where(check), ri,
-                        r.rate);
-    if (!(r.end_time >= r.start_time))
-      throw_input_error("{}: releases[{}]: end_time = {} s is before start_time = {} s",
-                        where(check), ri, r.end_time, r.start_time);
-    check_range(check, ri, "length", r.length_min, r.length_max, true);
-    check_range(check, ri, "width", r.width_min, r.width_max, true);
-    check_range(check, ri, "density", r.density_min, r.density_max, true);
-    check_range(check, ri, "angle", r.angle_min_deg, r.angle_max_deg, false);
-    lines_.push_back({r, std::mt19937_64(r.seed), 0});
+    const std::string at = location(ri);
+    if (r.count < 0) throw_input_error("{}: count = {} bodies must be positive", at, r.count);
+    if (r.count == 0 && !(r.rate > 0.0))
+      throw_input_error("{}: rate = {} bodies/min must be positive", at, r.rate);
+    if (r.count == 0 && !(r.end_time >= r.start_time))
+      throw_input_error("{}: end_time = {} s is before start_time = {} s", at, r.end_time,
+                        r.start_time);
+    if (!r.zone.empty()) {
+      if (const std::string defect = polygon_defect(r.zone); !defect.empty())
+        throw_input_error("{}.zone: {}", at, defect);
+    }
+    check_range(at, "length", r.length_min, r.length_max, true);
+    check_range(at, "width", r.width_min, r.width_max, true);
+    check_range(at, "density", r.density_min, r.density_max, true);
+    check_range(at, "angle", r.angle_min_deg, r.angle_max_deg, false);
   }
+}
+
+std::string Releaser::location(int r) const {
+  const int line = lines_[r].release.source_line;
+  if (line > 0) return fmt::format("{}:{}: bodies.release[{}]", where(check_), line, r);
+  return fmt::format("{}: releases[{}]", where(check_), r);
+}
+
+void Releaser::check_zones(const FlowField& flow, double t) const {
+  for (std::size_t r = 0; r < lines_.size(); ++r) {
+    const std::vector<Vec2>& zone = lines_[r].release.zone;
+    int hint = -1;
+    for (std::size_t k = 0; k < zone.size(); ++k) {
+      if (flow.sample(zone[k], t, hint).inside) continue;
+      throw_input_error(
+          "{}.zone: corner {} at ({}, {}) m is outside the domain; a zone's corners must lie in "
+          "the mesh",
+          location(static_cast<int>(r)), k + 1, zone[k].x(), zone[k].y());
+    }
+  }
+}
+
+double Releaser::next_time(const Line& line) {
+  const Release& rel = line.release;
+  if (rel.count > 0)
+    return line.count < rel.count ? rel.start_time : std::numeric_limits<double>::infinity();
+  const double t_k = rel.start_time + static_cast<double>(line.count) * (60.0 / rel.rate);  // [s]
+  return t_k <= rel.end_time ? t_k : std::numeric_limits<double>::infinity();
+}
+
+Vec2 Releaser::draw_position(int r, Line& line) const {
+  const Release& rel = line.release;
+  if (rel.zone.empty()) {
+    const double s = uniform(line.random, 0.0, 1.0);
+    return rel.line_start + s * (rel.line_end - rel.line_start);
+  }
+  // Uniform in the polygon: uniform in its bounding box, kept when inside (rejection). A valid
+  // zone has a positive area, so a point comes; the bound only stops a sliver of a zone that
+  // fills next to nothing of its box from looping for ever.
+  constexpr long most_draws = 1'000'000;
+  const BoundingBox box = bounding_box(rel.zone);
+  for (long draw = 0; draw < most_draws; ++draw) {
+    const Vec2 p{uniform(line.random, box.min.x(), box.max.x()),
+                 uniform(line.random, box.min.y(), box.max.y())};
+    if (polygon_contains(rel.zone, p)) return p;
+  }
+  const Vec2 size = box.max - box.min;
+  throw_input_error(
+      "{}.zone: no point inside the zone in {} draws; it fills {:.2g} of its bounding box (draw "
+      "a thin zone as several)",
+      location(r), most_draws, std::abs(signed_area(rel.zone)) / (size.x() * size.y()));
 }
 
 int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, double t1) {
@@ -101,11 +186,10 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
   for (std::size_t r = 0; r < lines_.size(); ++r) {
     Line& line = lines_[r];
     const Release& rel = line.release;
-    const double interval = 60.0 / rel.rate;  // [s] between two bodies
     for (;;) {
-      const double t_k = rel.start_time + static_cast<double>(line.count) * interval;
-      if (t_k >= t1 || t_k > rel.end_time) break;
-      // Draw in a fixed order, so that body k of a line depends only on the seed and k.
+      const double t_k = next_time(line);
+      if (!(t_k < t1)) break;
+      // Draw in a fixed order, so that body k of a release depends only on the seed and k.
       BodySpec spec;
       spec.shape = rel.shape;
       spec.length = uniform(line.random, rel.length_min, rel.length_max);
@@ -114,17 +198,18 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
       spec.density = uniform(line.random, rel.density_min, rel.density_max);
       ++line.count;
       // A body that does not fit where it is drawn (a long log across a bank near the line's
-      // end) is drawn again along the line and in angle; only when none of the tries fits is
-      // the release an error.
+      // end, a car on one parked before it) is drawn again in position and angle; only when
+      // none of the tries fits is the release an error.
       constexpr int tries = 100;
       for (int attempt = 1;; ++attempt) {
-        const double s = uniform(line.random, 0.0, 1.0);
-        spec.position = rel.line_start + s * (rel.line_end - rel.line_start);
+        spec.position = draw_position(static_cast<int>(r), line);
         spec.angle = uniform(line.random, rel.angle_min_deg, rel.angle_max_deg) * pi / 180.0;
+        const std::string what =
+            fmt::format("releases[{}] body {} (released at t = {} s, {} tries)", r, line.count - 1,
+                        t_k, attempt);
         try {
-          check_body_placement(spec, flow, t_k, check_,
-                               fmt::format("releases[{}] body {} (released at t = {} s, {} tries)",
-                                           r, line.count - 1, t_k, attempt));
+          check_body_placement(spec, flow, t_k, check_, what);
+          if (rel.count > 0) check_clear_of_bodies(spec, bodies, check_, what);
           break;
         } catch (const InputError&) {
           if (attempt == tries) throw;
@@ -147,10 +232,8 @@ void Releaser::restore_state(const std::string& text) {
   std::istringstream in(text);
   for (Line& line : lines_) in >> line.count >> line.random;
   if (!in)
-    throw_input_error(
-        "the release state in the checkpoint does not fit the case's {} "
-        "release lines",
-        lines_.size());
+    throw_input_error("the release state in the checkpoint does not fit the case's {} releases",
+                      lines_.size());
 }
 
 }  // namespace flotsam

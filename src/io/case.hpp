@@ -149,11 +149,14 @@ struct ContactConfig {
   double allowed_overlap = 0.005;  // [-] overlap left uncorrected, fraction of the thinner width
 };
 
-/// Bodies released from a line at a rate, with sizes drawn uniformly in ranges (spec 5).
+/// Bodies released from a line or a zone (spec 5), at a rate over [start_time, end_time] or
+/// `count` of them at once at start_time, with sizes drawn uniformly in ranges.
 struct Release {
-  Vec2 line_start, line_end;                // [m] release line
-  double start_time = 0.0, end_time = 0.0;  // [s]
-  double rate = 0.0;                        // bodies per minute [1/min]
+  Vec2 line_start = Vec2::Zero(), line_end = Vec2::Zero();  // [m] release line (no zone)
+  std::vector<Vec2> zone;                   // [m] corners of a release zone; empty: the line
+  double start_time = 0.0, end_time = 0.0;  // [s]; end_time unused with a count
+  double rate = 0.0;                        // bodies per minute [1/min]; unused with a count
+  long count = 0;                           // > 0: this many bodies at once at start_time
   Shape shape = Shape::log;
   double length_min = 20.0, length_max = 20.0;      // L [m]
   double width_min = 1.0, width_max = 1.0;          // l [m]
@@ -161,6 +164,7 @@ struct Release {
   double density_min = 600.0, density_max = 600.0;  // [kg m^-3]
   double angle_min_deg = 0.0, angle_max_deg = 360.0;
   unsigned long seed = 1;
+  int source_line = 0;  // line of the release in the case file, for messages (0: built in code)
 };
 
 struct BodiesConfig {

@@ -7,6 +7,7 @@
 
 #include "core/constants.hpp"
 #include "io/case_sections.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 
@@ -109,19 +110,50 @@ std::pair<double, double> read_span(const YamlMap& m, std::string_view key,
   return {lo, hi};
 }
 
+// Where a release puts its bodies: `line: [[x0, y0], [x1, y1]]` or `zone: [[x, y], ...]`, a
+// simple polygon (mesh/simple_polygon.hpp).
+void read_release_place(const YamlValue& item, Release& r) {
+  const YamlMap m = item.map();
+  const std::string place = m.only_one_of({"line", "zone"});
+  if (place.empty()) {
+    m.check_keys();  // a misspelt 'line' or 'zone' is reported as such
+    m.fail("expected a release line 'line: [[x0, y0], [x1, y1]]' or a zone 'zone: [[x, y], ...]'");
+  }
+  if (place == "line") {
+    const YamlValue line = m.get("line");
+    const auto ends = line.list();
+    if (ends.size() != 2)
+      line.fail(fmt::format("expected two points [[x0, y0], [x1, y1]], got {}", ends.size()));
+    r.line_start = ends[0].vec2();
+    r.line_end = ends[1].vec2();
+    r.source_line = item.line();
+    return;
+  }
+  const YamlValue zone = m.get("zone");
+  for (const YamlValue& corner : zone.list()) r.zone.push_back(corner.vec2());
+  if (const std::string defect = polygon_defect(r.zone); !defect.empty()) zone.fail(defect);
+  r.source_line = zone.line();
+}
+
+// When: `count` bodies at once at `start`, or `rate` bodies per minute from `start` to `end`.
+void read_release_times(const YamlMap& m, Release& r) {
+  r.start_time = m.number("start", r.start_time, Range::non_negative());
+  if (const auto count = m.find("count")) {
+    r.count = count->integer(Range::at_least(1));
+    m.forbid("rate", "a release with a count puts all its bodies at once at 'start'");
+    m.forbid("end", "a release with a count puts all its bodies at once at 'start'");
+    return;
+  }
+  const YamlValue end =
+      m.get("end", "the time the release stops [s] (or give a 'count' of bodies at once)");
+  r.end_time = end.number(Range{r.start_time, std::numeric_limits<double>::infinity(), true});
+  r.rate = m.get("rate", "bodies per minute").number(Range::positive());
+}
+
 Release read_release(const YamlValue& item) {
   const YamlMap m = item.map();
   Release r;
-  const YamlValue line = m.get("line", "the release line [[x0, y0], [x1, y1]] [m]");
-  const auto ends = line.list();
-  if (ends.size() != 2)
-    line.fail(fmt::format("expected two points [[x0, y0], [x1, y1]], got {}", ends.size()));
-  r.line_start = ends[0].vec2();
-  r.line_end = ends[1].vec2();
-  r.start_time = m.number("start", r.start_time, Range::non_negative());
-  const YamlValue end = m.get("end", "the time the release stops [s]");
-  r.end_time = end.number(Range{r.start_time, std::numeric_limits<double>::infinity(), true});
-  r.rate = m.get("rate", "bodies per minute").number(Range::positive());
+  read_release_times(m, r);
   r.shape = read_shape(m);
   std::tie(r.length_min, r.length_max) =
       read_span(m, "length", {r.length_min, r.length_max}, Range::positive());
@@ -140,6 +172,7 @@ Release read_release(const YamlValue& item) {
       read_span(m, "angle_deg", {r.angle_min_deg, r.angle_max_deg}, Range::any());
   r.seed = static_cast<unsigned long>(
       m.integer("seed", static_cast<long>(r.seed), Range::non_negative()));
+  read_release_place(item, r);  // last: with every other key read, a misspelt one is reported
   return r;
 }
 

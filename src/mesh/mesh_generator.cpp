@@ -24,7 +24,7 @@
 #include "mesh/gmsh_model.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/msh_reader.hpp"
-#include "mesh/plane_geometry.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 namespace {
@@ -74,27 +74,16 @@ void add_pier_size_field(const ChannelGeometry& channel, const std::vector<int>&
 void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
   const auto& p = polygon.points;
   const std::size_t n = p.size();
-  if (n < 3) throw_input_error("{}: a polygon needs at least 3 points; got {}", source, n);
+  if (const std::string defect = polygon_defect(p); !defect.empty())
+    throw_input_error("{}: {}", source, defect);
   if (polygon.groups.size() != n)
     throw_input_error("{}: {} points make {} sides, but {} group names are given (one per side)",
                       source, n, n, polygon.groups.size());
   require_positive(source, "mesh_size", polygon.mesh_size);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     if (polygon.groups[i].empty())
       throw_input_error("{}: side {} (points {} to {}) has an empty group name", source, i + 1,
                         i + 1, (i + 1) % n + 1);
-    for (std::size_t j = 0; j < i; ++j)
-      if (p[i] == p[j])
-        throw_input_error("{}: points {} and {} coincide at ({}, {}) m", source, j + 1, i + 1,
-                          p[i].x(), p[i].y());
-  }
-  if (const auto crossing = ring_self_crossing(p)) {
-    const auto [i, j] = *crossing;
-    throw_input_error(
-        "{}: the polygon intersects itself: side {} (points {} to {}) meets side {} (points {} "
-        "to {})",
-        source, i + 1, i + 1, (i + 1) % n + 1, j + 1, j + 1, (j + 1) % n + 1);
-  }
 }
 
 }  // namespace

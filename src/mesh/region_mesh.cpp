@@ -19,7 +19,7 @@
 #include "mesh/gmsh_model.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
-#include "mesh/plane_geometry.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 namespace {
@@ -42,7 +42,7 @@ void check_simple(const NamedRing& ring) {
   if (p.size() < 3)
     throw_input_error("{}: {} has fewer than 3 distinct corners; it is not a polygon", source,
                       ring.name);
-  if (const auto crossing = ring_self_crossing(p)) {
+  if (const auto crossing = first_crossing(p)) {
     const auto [i, j] = *crossing;
     throw_input_error(
         "{}: {} intersects itself: its side from ({:.3f}, {:.3f}) to ({:.3f}, {:.3f}) meets its "
@@ -74,7 +74,7 @@ void check_holes(const NamedRing& outline, const std::vector<Hole>& holes) {
                           h.ring[j], h.ring[(j + 1) % h.ring.size()]))
           throw_input_error("{}: {} crosses the outline ({}) near ({:.3f}, {:.3f}) m", source,
                             h.name, outline.name, h.ring[j].x(), h.ring[j].y());
-    if (!inside_ring(outline.points, h.ring.front()))
+    if (!polygon_contains(outline.points, h.ring.front()))
       throw_input_error("{}: {} lies outside the outline ({})", source, h.name, outline.name);
   }
   // Pairs whose boxes touch are tested exactly (sorted by x_min: a sweep along x).
@@ -87,7 +87,7 @@ void check_holes(const NamedRing& outline, const std::vector<Hole>& holes) {
       const Hole &p = holes[order[a]], &q = holes[order[b]];
       if (q.lo.x() > p.hi.x()) break;
       if (q.lo.y() > p.hi.y() || q.hi.y() < p.lo.y()) continue;
-      if (rings_overlap(p.ring, q.ring))
+      if (polygons_overlap(p.ring, q.ring))
         throw_input_error("{}: {} and {} overlap; footprints, piers and islands must be apart",
                           source, p.name, q.name);
     }

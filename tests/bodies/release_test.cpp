@@ -1,10 +1,12 @@
 // Release (spec 5): explicit bodies are checked where they are placed, with messages naming the
-// body; release lines release at their rate, within their ranges, reproducibly from a seed.
+// body; release lines and zones release at their rate, or a count at once, within their ranges,
+// reproducibly from a seed; a zone's bodies are uniform in its polygon.
 #include "bodies/release.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "bodies/analytic_flow.hpp"
 #include "core/constants.hpp"
@@ -170,6 +172,148 @@ TEST(Releaser, ALineOnDryGroundPlacesBodiesThatRestOnTheBed) {  // logs on a flo
   EXPECT_EQ(bodies.position[0].x(), 85.0);
   EXPECT_GE(bodies.position[0].y(), 10.0);
   EXPECT_LE(bodies.position[0].y(), 40.0);
+}
+
+/// An L-shaped zone of three 10 m squares: [10, 30] x [10, 20] and [10, 20] x [20, 30].
+Release zone() {
+  Release r = line();
+  r.zone = {{10, 10}, {30, 10}, {30, 20}, {20, 20}, {20, 30}, {10, 30}};
+  return r;
+}
+
+bool in_l_shape(const Vec2& p) {
+  return p.x() >= 10 && p.y() >= 10 &&
+         ((p.x() <= 30 && p.y() <= 20) || (p.x() <= 20 && p.y() <= 30));
+}
+
+std::string releaser_error(const Release& r, int source_line = 0) {
+  Release with_line = r;
+  with_line.source_line = source_line;
+  try {
+    Releaser releaser({line(), with_line}, PlacementCheck{"c.yaml"});
+    releaser.check_zones(channel(), 0.0);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Releaser, AZoneReleasesAtTheRateInsideItsPolygon) {
+  BodySet bodies;
+  Releaser releaser({zone()}, PlacementCheck{});
+  EXPECT_EQ(releaser.release(bodies, channel(), 0, 600.1), 21);  // as the line: t = 0, 30, ..., 600
+  for (int i = 0; i < bodies.size(); ++i)
+    EXPECT_TRUE(in_l_shape(bodies.position[i])) << bodies.position[i].transpose();
+}
+
+TEST(Releaser, AZoneIsUniformInItsPolygon) {
+  // 30,000 small bodies, one per second: each square of the L holds a third of them, within
+  // 4 standard deviations of a binomial count, sqrt(N p (1 - p)) = 82.
+  Release r = zone();
+  r.rate = 60;
+  r.end_time = 29999;
+  r.length_min = r.length_max = 0.02;
+  r.width_min = r.width_max = 0.01;
+  BodySet bodies;
+  Releaser releaser({r}, PlacementCheck{});
+  ASSERT_EQ(releaser.release(bodies, channel(), 0, 30000), 30000);
+  int squares[3] = {0, 0, 0};  // [10,20]x[10,20], [20,30]x[10,20], [10,20]x[20,30]
+  for (const Vec2& p : bodies.position) {
+    ASSERT_TRUE(in_l_shape(p));
+    ++squares[p.y() > 20 ? 2 : p.x() > 20 ? 1 : 0];
+  }
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(squares[k], 10000, 4 * 82) << "square " << k;
+  std::printf("bodies per square: %d, %d, %d\n", squares[0], squares[1], squares[2]);
+}
+
+TEST(Releaser, ACountIsReleasedAtOnceAtTheStartWithoutOverlaps) {
+  Release r = zone();
+  r.count = 12;  // 82 m^2 of cars in 300 m^2
+  r.rate = 0;    // unused with a count
+  r.shape = Shape::box;
+  r.length_min = r.length_max = 4.0;
+  r.width_min = r.width_max = 1.7;
+  r.height = 1.5;
+  r.angle_min_deg = r.angle_max_deg = 0;  // parked along x
+  BodySet bodies;
+  Releaser releaser({r}, PlacementCheck{});
+  EXPECT_EQ(releaser.release(bodies, channel(), 0, 0.1), 12);
+  EXPECT_EQ(releaser.release(bodies, channel(), 0.1, 1000), 0);
+  EXPECT_EQ(releaser.released(0), 12);
+  for (int i = 0; i < bodies.size(); ++i) {
+    EXPECT_TRUE(in_l_shape(bodies.position[i]));
+    EXPECT_EQ(bodies.shape[i], Shape::box);
+    EXPECT_EQ(bodies.height[i], 1.5);
+    for (int j = 0; j < i; ++j) {  // axis-aligned cars overlap when both extents overlap
+      const Vec2 gap = (bodies.position[i] - bodies.position[j]).cwiseAbs();
+      EXPECT_FALSE(gap.x() < 4.0 && gap.y() < 1.7) << "cars " << j << " and " << i;
+    }
+  }
+  // Released at `start`, not at t = 0.
+  r.start_time = 50;
+  BodySet later;
+  Releaser late({r}, PlacementCheck{});
+  EXPECT_EQ(late.release(later, channel(), 0, 50), 0);
+  EXPECT_EQ(late.release(later, channel(), 50, 50.1), 12);
+}
+
+TEST(Releaser, AZoneTooSmallForItsCountIsAnErrorNamingTheBody) {
+  Release r = zone();
+  r.count = 200;  // 200 logs 5-15 m long in 300 m^2
+  BodySet bodies;
+  Releaser releaser({r}, PlacementCheck{"c.yaml"});
+  try {
+    releaser.release(bodies, channel(), 0, 0.1);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("c.yaml: releases[0] body "), std::string::npos) << what;
+    EXPECT_NE(what.find("100 tries"), std::string::npos) << what;
+    EXPECT_NE(what.find(": overlaps body "), std::string::npos) << what;
+  }
+}
+
+TEST(Releaser, ZoneSameSeedSameBodies) {
+  const auto run = [](unsigned long seed) {
+    Release r = zone();
+    r.seed = seed;
+    BodySet bodies;
+    Releaser releaser({r}, PlacementCheck{});
+    releaser.release(bodies, channel(), 0, 300);
+    return bodies.position;
+  };
+  EXPECT_EQ(run(7), run(7));
+  EXPECT_NE(run(7), run(8));
+}
+
+TEST(Releaser, BadZonesAreErrorsNamingTheReleaseAndTheDefect) {
+  Release r = zone();
+  r.zone = {{10, 10}, {20, 10}};
+  EXPECT_EQ(releaser_error(r),
+            "c.yaml: releases[1].zone: a polygon needs at least 3 points; got 2");
+  r.zone = {{10, 10}, {20, 20}, {20, 10}, {10, 20}};  // a bow tie
+  EXPECT_EQ(releaser_error(r),
+            "c.yaml: releases[1].zone: the polygon intersects itself: side 1 (points 1 to 2) "
+            "meets side 3 (points 3 to 4)");
+  r.zone = {{10, 10}, {20, 20}, {15, 15}};
+  EXPECT_EQ(releaser_error(r),
+            "c.yaml: releases[1].zone: the polygon has zero area (its points lie on one line)");
+  r.zone = {{10, 10}, {20, 10}, {20, 20}, {20, 10}};
+  EXPECT_EQ(releaser_error(r), "c.yaml: releases[1].zone: points 2 and 4 coincide at (20, 10) m");
+  r = zone();
+  r.count = -1;
+  EXPECT_EQ(releaser_error(r), "c.yaml: releases[1]: count = -1 bodies must be positive");
+}
+
+TEST(Releaser, AZoneOutsideTheDomainIsAnErrorNamingItsCorner) {
+  Release r = zone();
+  r.zone = {{90, 10}, {120, 10}, {120, 20}};  // the channel ends at x = 100
+  EXPECT_EQ(releaser_error(r),
+            "c.yaml: releases[1].zone: corner 2 at (120, 10) m is outside the domain; a zone's "
+            "corners must lie in the mesh");
+  EXPECT_EQ(releaser_error(r, 14),
+            "c.yaml:14: bodies.release[1].zone: corner 2 at (120, 10) m is outside the domain; a "
+            "zone's corners must lie in the mesh");
 }
 
 }  // namespace

@@ -105,6 +105,45 @@ TEST(Simulation, TwoWayRunKeepsTheWaterBalance) {
   EXPECT_GT(s.bodies().position[0].x(), 30.0);
 }
 
+/// Six cars parked in a zone of the channel at the start (a count), as a case file gives them.
+Case parked_cars_case(std::vector<Vec2> zone) {
+  Case c = channel_case(CouplingMode::frozen);
+  c.file = "case.yaml";
+  c.bodies.bodies.clear();
+  Release cars;
+  cars.zone = std::move(zone);
+  cars.count = 6;
+  cars.shape = Shape::box;
+  cars.length_min = cars.length_max = 4.0;
+  cars.width_min = cars.width_max = 1.7;
+  cars.height = 1.5;
+  cars.density_min = cars.density_max = 300.0;
+  cars.source_line = 14;
+  c.bodies.releases = {cars};
+  return c;
+}
+
+TEST(Simulation, CarsParkedInAZoneAreReleasedInTheFirstStep) {
+  Simulation s(parked_cars_case({{20, 2}, {60, 2}, {60, 18}, {20, 18}}), channel_mesh(), quiet());
+  s.initialize();
+  EXPECT_EQ(s.bodies().size(), 0);
+  s.step();
+  ASSERT_EQ(s.bodies().size(), 6);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(s.bodies().shape[i], Shape::box);
+}
+
+TEST(Simulation, AZoneOutsideTheDomainIsAnErrorNamingItsLineAndCorner) {
+  Simulation s(parked_cars_case({{180, 2}, {250, 2}, {180, 18}}), channel_mesh(), quiet());
+  try {
+    s.initialize();
+    FAIL() << "a zone reaching beyond the outflow was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "case.yaml:14: bodies.release[0].zone: corner 2 at (250, 2) m is outside the "
+                 "domain; a zone's corners must lie in the mesh");
+  }
+}
+
 TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
   const auto dir = test::scratch_path("flotsam_simulation_test");
   std::filesystem::remove_all(dir);

@@ -603,6 +603,79 @@ TEST(CaseFileError, ProbesAreChecked) {
             "case.yaml:12: output.probe_interval: expected a number >= 0, got -1");
 }
 
+TEST(CaseFile, ReleaseZonesAreRead) {
+  const Case c = parse_case(appended(R"(bodies:
+  release:
+    - zone: [[10, 2], [30, 2], [30, 8], [10, 8]]
+      count: 12
+      start: 5
+      shape: box
+      length: 4.0
+      width: 1.7
+      height: 1.5
+      density: 108
+      angle_deg: [-5, 5]
+    - {zone: [[40, 2], [60, 2], [50, 18]], end: 600, rate: 2}
+)"),
+                            "case.yaml");
+  ASSERT_EQ(c.bodies.releases.size(), 2u);
+  const Release& cars = c.bodies.releases[0];
+  EXPECT_EQ(cars.zone, (std::vector<Vec2>{{10, 2}, {30, 2}, {30, 8}, {10, 8}}));
+  EXPECT_EQ(cars.count, 12);
+  EXPECT_EQ(cars.start_time, 5.0);
+  EXPECT_EQ(cars.rate, 0.0);
+  EXPECT_EQ(cars.shape, Shape::box);
+  EXPECT_EQ(cars.height, 1.5);
+  EXPECT_EQ(cars.source_line, 14);  // the zone's line, for messages
+  const Release& logs = c.bodies.releases[1];
+  EXPECT_EQ(logs.zone.size(), 3u);
+  EXPECT_EQ(logs.count, 0);
+  EXPECT_EQ(logs.rate, 2.0);
+  EXPECT_EQ(logs.end_time, 600.0);
+  EXPECT_EQ(logs.source_line, 23);
+}
+
+TEST(CaseFileError, ReleaseZonesAreChecked) {
+  const auto release = [](const std::string& item) {
+    return appended("bodies:\n  release:\n    - " + item + "\n");
+  };
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [10, 0]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zone: a polygon needs at least 3 points; got 2");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [10, 10], [10, 0], [0, 10]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zone: the polygon intersects itself: side 1 (points "
+            "1 to 2) meets side 3 (points 3 to 4)");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 5], [10, 10]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zone: the polygon has zero area (its points lie on "
+            "one line)");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5], [5, 0]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zone: points 2 and 4 coincide at (5, 0) m");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zone[2]: expected a pair of numbers [x, y], got a "
+            "list");
+  EXPECT_EQ(error_of(release("{line: [[5, 2], [5, 18]], zone: [[0, 0], [5, 0], [5, 5]], "
+                             "count: 3}")),
+            "case.yaml:14: bodies.release[0].zone: give either 'line' (line 14) or 'zone', not "
+            "both");
+  EXPECT_EQ(error_of(release("{count: 3}")),
+            "case.yaml:14: bodies.release[0]: expected a release line 'line: [[x0, y0], [x1, "
+            "y1]]' or a zone 'zone: [[x, y], ...]'");
+  EXPECT_EQ(error_of(release("{zome: [[0, 0], [5, 0], [5, 5]], count: 3}")),
+            "case.yaml:14: bodies.release[0].zome: unknown key (did you mean 'zone'?); allowed "
+            "here: start, count, rate, end, shape, length, width, height, density, angle_deg, "
+            "seed, line, zone");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], count: 0}")),
+            "case.yaml:14: bodies.release[0].count: expected an integer >= 1, got 0");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], count: 3, rate: 2}")),
+            "case.yaml:14: bodies.release[0].rate: not allowed here: a release with a count puts "
+            "all its bodies at once at 'start'");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], count: 3, end: 60}")),
+            "case.yaml:14: bodies.release[0].end: not allowed here: a release with a count puts "
+            "all its bodies at once at 'start'");
+  EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], rate: 2}")),
+            "case.yaml:14: bodies.release[0].end: missing; this key is required: the time the "
+            "release stops [s] (or give a 'count' of bodies at once)");
+}
+
 // ---- errors: each names file, line, key path, and what was expected ------------------------
 
 TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
