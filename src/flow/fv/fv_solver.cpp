@@ -253,8 +253,13 @@ void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
   sum_cell_rates(U);
 }
 
-// (M-14) friction, implicit in the velocity: (hu)^{n+1} = (hu)* / (1 + dt gamma), with
-// gamma = c_f |u*| / H (friction.hpp) >= 0: the flow slows, never turns round.
+// (M-14) friction, backward Euler in the velocity: u^{n+1} = u* - dt c_f |u^{n+1}| u^{n+1} / H,
+// with c_f and H at the sub-step's depth. u^{n+1} is parallel to u*, and its speed s solves
+//   s (1 + b s) = |u*|,  b = dt c_f / H   =>   s = 2 |u*| / (1 + sqrt(1 + 4 b |u*|)),
+// so (hu)^{n+1} = (hu)* 2 / (1 + sqrt(1 + 4 dt gamma)), gamma = c_f |u*| / H = rate (friction.hpp).
+// The factor is in (0, 1]: the flow slows, never turns round; and a flow in which the stages'
+// drive balances friction (uniform flow, a film under rain on a slope) is its fixed point
+// whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
 void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   if (friction_.law == FrictionLaw::none) return;
   const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
@@ -264,7 +269,7 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
     if (h <= 0.0) continue;
     const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
     const double speed = std::sqrt(u * u + v * v);
-    const double factor = 1.0 / (1.0 + dt * friction_.rate(speed, h));
+    const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * friction_.rate(speed, h)));
     U.hu[i] *= factor;
     U.hv[i] *= factor;
   }
