@@ -71,7 +71,7 @@ void Simulation::read_checkpoint(const std::string& path) {
     contacts_->restore(std::move(last), std::move(order), r.read_value<int>("contacts.sweep_axis"));
   }
   if (options_.write_output)
-    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, open_groups(),
+    output_ = std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
                                           output_times, has_bodies_);
 }
 
