@@ -16,6 +16,9 @@ class TimeSeries {
   explicit TimeSeries(std::vector<std::pair<double, double>> points) : points_(std::move(points)) {}
 
   double operator()(double t) const;
+  /// The integral over [t0, t1] (t0 <= t1) [value x t]: exact for the piecewise-linear series and
+  /// its end values held outside the table (a hyetograph's rain depth over a step).
+  double integral(double t0, double t1) const;
   bool is_constant() const { return points_.size() == 1; }
   const std::vector<std::pair<double, double>>& points() const { return points_; }
 

@@ -11,31 +11,32 @@
 #include "io/vtk_writer.hpp"
 
 namespace flotsam {
-namespace {
-
-// The balance table's columns: the totals, then the volume that has left through each open
-// boundary group since the start (negative: entered), whose differences give mean discharges.
-std::vector<std::string> balance_columns(const std::vector<std::string>& open_groups) {
-  std::vector<std::string> columns = {"t [s]", "volume [m^3]", "outflow [m^3]",
-                                      "balance error [m^3]", "relative error [-]"};
-  for (const std::string& group : open_groups) columns.push_back("outflow " + group + " [m^3]");
-  return columns;
-}
-
-}  // namespace
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
-                     const Mesh& mesh, const std::vector<std::uint8_t>& open_group, bool overwrite,
+                     const Mesh& mesh, const RunLayout& layout, bool overwrite,
                      const std::string& case_file)
     : directory_(prepare_output_directory(directory.string(), overwrite, case_file)),
       name_(name),
-      open_group_(open_group),
+      open_group_(layout.open_group),
+      rain_(layout.rain),
       flow_index_((directory_ / (name + ".pvd")).string()),
       body_index_((directory_ / (name + "_bodies.pvd")).string()) {
   write_boundary_vtp((directory_ / "boundary.vtp").string(), mesh);
-  write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group});
+  write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group_});
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
-                                         balance_columns(open_group_names(mesh)));
+                                         balance_columns(mesh));
+}
+
+// The balance table's columns: the totals (with the rain and the infiltration when it rains),
+// then the volume that has left through each open boundary group since the start (negative:
+// entered), whose differences give mean discharges.
+std::vector<std::string> RunOutput::balance_columns(const Mesh& mesh) const {
+  std::vector<std::string> columns = {"t [s]", "volume [m^3]", "outflow [m^3]"};
+  if (rain_) columns.insert(columns.end(), {"rain [m^3]", "infiltration [m^3]"});
+  columns.insert(columns.end(), {"balance error [m^3]", "relative error [-]"});
+  for (const std::string& group : open_group_names(mesh))
+    columns.push_back("outflow " + group + " [m^3]");
+  return columns;
 }
 
 std::vector<std::string> RunOutput::open_group_names(const Mesh& mesh) const {
@@ -46,11 +47,12 @@ std::vector<std::string> RunOutput::open_group_names(const Mesh& mesh) const {
 }
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
-                     const Mesh& mesh, const std::vector<std::uint8_t>& open_group,
-                     const std::vector<double>& times, bool with_bodies)
+                     const Mesh& mesh, const RunLayout& layout, const std::vector<double>& times,
+                     bool with_bodies)
     : directory_(directory),
       name_(name),
-      open_group_(open_group),
+      open_group_(layout.open_group),
+      rain_(layout.rain),
       flow_index_((directory_ / (name + ".pvd")).string()),
       body_index_((directory_ / (name + "_bodies.pvd")).string()),
       times_(times),
@@ -60,7 +62,7 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
     if (with_bodies) body_index_.add(times_[k], fmt::format("bodies_{:06d}.vtp", k));
   }
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
-                                         balance_columns(open_group_names(mesh)), true);
+                                         balance_columns(mesh), true);
 }
 
 void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
@@ -73,7 +75,9 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
   write_run_snapshot((directory_ / fmt::format("state_{:06d}.bin", count())).string(), t,
                      flow.eta(), flow.u(), flow.v(), flow.wet_nodes(), bodies, jammed);
   const WaterBalance& b = flow.water_balance();
-  std::vector<double> row = {t, b.volume, b.outflow, b.error(), b.relative_error()};
+  std::vector<double> row = {t, b.volume, b.outflow};
+  if (rain_) row.insert(row.end(), {b.rain, b.infiltration});
+  row.insert(row.end(), {b.error(), b.relative_error()});
   for (std::size_t g = 0; g < open_group_.size(); ++g)
     if (open_group_[g]) row.push_back(b.group_outflow[g]);
   balance_->row(row);

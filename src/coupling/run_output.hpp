@@ -5,6 +5,7 @@
 //   boundary.vtp                          the boundary with its groups, once
 //   <name>_bodies.csv                     every body at every output time (trajectories)
 //   <name>_balance.csv                    water volume balance at every output time, with the
+//                                         rain and infiltration (a case with rain) and the
 //                                         volume out through each open boundary group
 //   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
 //   run.bin + state_NNNNNN.bin            the mesh once, the state at every output, for
@@ -26,19 +27,25 @@
 
 namespace flotsam {
 
+/// What the case adds to a run's files: the open boundary groups (pictures draw them open; the
+/// balance table has a column of the outflow through each) and whether it rains (the balance
+/// table's rain and infiltration columns).
+struct RunLayout {
+  std::vector<std::uint8_t> open_group;  // per mesh group: 1 inflow/outflow, 0 wall
+  bool rain = false;
+};
+
 class RunOutput {
  public:
   /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp and run.bin.
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const std::vector<std::uint8_t>& open_group, bool overwrite,
-            const std::string& case_file);
+            const RunLayout& layout, bool overwrite, const std::string& case_file);
 
   /// Continues the output of a run in `directory` (a restart): the indexes list again the
   /// `times` already written, the tables get their rows appended, and the next output is
   /// number times.size().
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const std::vector<std::uint8_t>& open_group, const std::vector<double>& times,
-            bool with_bodies);
+            const RunLayout& layout, const std::vector<double>& times, bool with_bodies);
 
   /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
   /// stays at its steady state's).
@@ -62,10 +69,12 @@ class RunOutput {
  private:
   void write_bodies(const BodySet& bodies, double t);
   std::vector<std::string> open_group_names(const Mesh& mesh) const;
+  std::vector<std::string> balance_columns(const Mesh& mesh) const;
 
   std::filesystem::path directory_;
   std::string name_;
   std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
+  bool rain_ = false;                     // the balance table has rain and infiltration columns
   PvdWriter flow_index_, body_index_;
   std::vector<double> times_;  // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;

@@ -75,10 +75,12 @@ void Simulation::initialize() {
   write_output_if_due(false);
 }
 
-std::vector<std::uint8_t> Simulation::open_groups() const {
-  std::vector<std::uint8_t> open(mesh_.group_names.size(), 0);
-  for (int g : outflow_groups_) open[g] = 1;
-  return open;
+RunLayout Simulation::run_layout() const {
+  RunLayout layout;
+  layout.open_group.assign(mesh_.group_names.size(), 0);
+  for (int g : outflow_groups_) layout.open_group[g] = 1;
+  layout.rain = case_.flow.rain.enabled;
+  return layout;
 }
 
 void Simulation::open_probes(bool append) {
@@ -202,9 +204,9 @@ void Simulation::write_output_if_due(bool force) {
 void Simulation::open_output(const std::vector<double>* output_times) {
   if (!options_.write_output) return;
   output_ = output_times ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_,
-                                                       open_groups(), *output_times, has_bodies_)
+                                                       run_layout(), *output_times, has_bodies_)
                          : std::make_unique<RunOutput>(
-                               output_directory(), case_.name, mesh_, open_groups(),
+                               output_directory(), case_.name, mesh_, run_layout(),
                                options_.overwrite || case_.output.overwrite, case_.file);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
@@ -249,9 +251,13 @@ std::string Simulation::summary() const {
                    case_.time.mode == CouplingMode::frozen    ? "frozen"
                    : case_.time.mode == CouplingMode::one_way ? "one-way"
                                                               : "two-way");
-  s += fmt::format("water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3{}\n",
-                   b.volume, b.initial_volume, b.outflow,
-                   b.lag != 0.0 ? fmt::format(", in BDF2's time lag {:.6g} m^3", b.lag) : "");
+  s += fmt::format(
+      "water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3{}{}\n", b.volume,
+      b.initial_volume, b.outflow,
+      case_.flow.rain.enabled
+          ? fmt::format(", rain {:.6g} m^3, infiltrated {:.6g} m^3", b.rain, b.infiltration)
+          : "",
+      b.lag != 0.0 ? fmt::format(", in BDF2's time lag {:.6g} m^3", b.lag) : "");
   s += fmt::format("water balance    {:.3g} m^3, relative {:.3g}\n", b.error(), b.relative_error());
   if (has_bodies_) {
     int floating = 0, grounded = 0;

@@ -77,7 +77,7 @@ class Simulation {
   void check_diagnostics();
   void write_output_if_due(bool force);
   void open_probes(bool append);
-  std::vector<std::uint8_t> open_groups() const;  // per mesh group: 1 inflow/outflow, 0 wall
+  RunLayout run_layout() const;  // the open groups (1 inflow/outflow, 0 wall), rain or not
   std::filesystem::path output_directory() const;
   /// Opens the run's output (a new folder, or continued after `output_times` on a restart).
   void open_output(const std::vector<double>* output_times);

@@ -62,6 +62,16 @@ struct FiniteVolumeConfig {
   double velocity_depth = 1e-3;  // H_eps [m]: below it velocities are desingularised (model.md)
 };
 
+/// Rain on the domain with a constant infiltration loss (flow.rain; finite-volume engine only,
+/// docs/model.md (M-17)). The intensity is uniform over the domain; the engine multiplies it by a
+/// weight per cell, 1 unless set (FiniteVolumeSolver::set_rain_weights).
+struct RainConfig {
+  bool enabled = false;       // flow.rain given
+  TimeSeries intensity;       // i(t) [mm/h]: a constant or a hyetograph, >= 0
+  double infiltration = 0.0;  // f [mm/h] >= 0: lost where there is water, never more than it
+  int line = 0;  // line of the key flow.rain in the case file, for messages (0: built in code)
+};
+
 struct FlowConfig {
   FlowEngineKind engine = FlowEngineKind::fem;
   FiniteVolumeConfig fv;
@@ -75,8 +85,9 @@ struct FlowConfig {
   double latitude_deg = 0.0;          // phi [deg]; Coriolis on when coriolis == true
   bool coriolis = false;
   Vec2 wind = Vec2::Zero();  // W at 10 m [m/s]
-  double min_depth = 1e-3;   // H_min [m], friction denominator bound (spec 1.1)
-  double dry_depth = 1e-3;   // H_dry [m] (spec 1.5)
+  RainConfig rain;
+  double min_depth = 1e-3;  // H_min [m], friction denominator bound (spec 1.1)
+  double dry_depth = 1e-3;  // H_dry [m] (spec 1.5)
   std::vector<BoundaryCondition> boundaries;
 
   // Initial state: still water with eta linear in x between the two values (spec 8.2), or flat.

@@ -62,6 +62,19 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
   return fv;
 }
 
+// Rain: an intensity i [mm/h] (a number or a hyetograph [[t, i], ...]) and an optional
+// infiltration f [mm/h], both >= 0.
+RainConfig read_rain(const YamlValue& value) {
+  const YamlMap m = value.map();
+  RainConfig rain;
+  rain.enabled = true;
+  rain.line = value.key_line();
+  rain.intensity = m.get("intensity", "i [mm/h], a number or a hyetograph [[t, i], ...]")
+                       .series("t", Range::non_negative());
+  rain.infiltration = m.number("infiltration", rain.infiltration, Range::non_negative());
+  return rain;
+}
+
 // A velocity component of the initial state: a number or a formula, both kept as a formula;
 // absent: empty (at rest).
 Expression read_initial_velocity(const YamlMap& m, std::string_view key) {
@@ -155,6 +168,7 @@ FlowConfig read_flow(const YamlMap& m) {
                             .number(Range::between(-90.0, 90.0));
   }
   if (m.has("wind")) flow.wind = m.get("wind").map().get("velocity", "W [m/s] as [x, y]").vec2();
+  if (m.has("rain")) flow.rain = read_rain(m.get("rain"));
   flow.min_depth = m.number("min_depth", flow.min_depth, Range::positive());
   flow.dry_depth = m.number("dry_depth", flow.dry_depth, Range::positive());
   read_initial(m.get("initial", "the initial water surface").map(), flow);

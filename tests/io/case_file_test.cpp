@@ -473,6 +473,25 @@ TEST(CaseFile, FreeBoundaryTakesNoValue) {
   EXPECT_EQ(c.flow.boundaries[1].line, 8);
 }
 
+TEST(CaseFile, RainIsAnIntensityOrAHyetographWithAnInfiltration) {
+  const Case c = parse_case(
+      edited("  initial:", "  engine: fv\n  rain: {intensity: 25, infiltration: 4}\n  initial:"),
+      "case.yaml");
+  EXPECT_TRUE(c.flow.rain.enabled);
+  EXPECT_TRUE(c.flow.rain.intensity.is_constant());
+  EXPECT_EQ(c.flow.rain.intensity(0.0), 25.0);
+  EXPECT_EQ(c.flow.rain.infiltration, 4.0);
+  EXPECT_EQ(c.flow.rain.line, 6);
+  const Case d = parse_case(edited("  initial:",
+                                   "  engine: fv\n  rain:\n    intensity: [[0, 0], [600, 80], "
+                                   "[1800, 0]]\n  initial:"),
+                            "case.yaml");
+  EXPECT_EQ(d.flow.rain.intensity.points().size(), 3u);
+  EXPECT_EQ(d.flow.rain.intensity(300.0), 40.0);
+  EXPECT_EQ(d.flow.rain.infiltration, 0.0);  // the default
+  EXPECT_FALSE(parse_case(base_case, "case.yaml").flow.rain.enabled);
+}
+
 TEST(CaseFile, ProbesAreNamedPoints) {
   const Case c = parse_case(appended(R"(output:
   probe_interval: 0.5
@@ -573,6 +592,32 @@ TEST(CaseFileError, FreeBoundaryRejectsValues) {
       error_of(edited("outflow: {type: elevation, value: 0.9}", "outflow: {type: free, u: 1}")),
       "case.yaml:8: flow.boundaries.outflow.u: not allowed here: a free boundary takes no "
       "value: what reaches it leaves");
+}
+
+TEST(CaseFileError, RainIsChecked) {
+  const auto rain = [](const std::string& keys) {
+    return edited("  initial:", "  engine: fv\n  rain: " + keys + "\n  initial:");
+  };
+  EXPECT_EQ(error_of(rain("{intensity: -5}")),
+            "case.yaml:6: flow.rain.intensity: expected a number >= 0, got -5");
+  EXPECT_EQ(error_of(rain("{intensity: [[0, 10], [60, -2]]}")),
+            "case.yaml:6: flow.rain.intensity[1][1]: expected a number >= 0, got -2");
+  EXPECT_EQ(error_of(rain("{intensity: [[0, 10], [600, 20], [300, 5]]}")),
+            "case.yaml:6: flow.rain.intensity[2]: t = 300 does not come after the previous row's "
+            "t = 600; a table's t must be strictly increasing");
+  EXPECT_EQ(error_of(rain("{intensity: 10, infiltration: -1}")),
+            "case.yaml:6: flow.rain.infiltration: expected a number >= 0, got -1");
+  EXPECT_EQ(error_of(rain("{intensity: 10, infiltration: [[0, 1]]}")),
+            "case.yaml:6: flow.rain.infiltration: expected a number >= 0, got a list");
+  EXPECT_EQ(error_of(rain("{infiltration: 1}")),
+            "case.yaml:6: flow.rain.intensity: missing; this key is required: i [mm/h], a number "
+            "or a hyetograph [[t, i], ...]");
+  EXPECT_EQ(error_of(rain("{intensity: {t: 0}}")),
+            "case.yaml:6: flow.rain.intensity: expected a number >= 0 or a table [[t, value], "
+            "...], got a map");
+  EXPECT_EQ(error_of(rain("{intensity: 10, duration: 60}")),
+            "case.yaml:6: flow.rain.duration: unknown key; allowed here: intensity, infiltration");
+  EXPECT_EQ(error_of(rain("20")), "case.yaml:6: flow.rain: expected a map of keys, got '20'");
 }
 
 TEST(CaseFileError, ProbesAreChecked) {
@@ -683,17 +728,17 @@ TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
       error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
       "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
       "engine, fv, gravity, density, viscosity, reynolds, friction, turbulence, coriolis, wind, "
-      "min_depth, dry_depth, initial, boundaries");
+      "rain, min_depth, dry_depth, initial, boundaries");
   EXPECT_EQ(error_of(appended("nmae: river\n")),
             "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
-            "bed, flow, time, bodies, output");
+            "bed, flow, time, bodies, output, crs");
   EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, angel_deg: 30}\n")),
             "case.yaml:14: bodies.list[0].angel_deg: unknown key (did you mean 'angle_deg'?); "
             "allowed here: shape, length, width, height, density, x, y, angle_deg, u, v, omega, "
             "id, anchored");
   EXPECT_EQ(error_of(edited("channel:", "chanel:")),
             "case.yaml:2: mesh.chanel: unknown key (did you mean 'channel'?); allowed here: file, "
-            "channel, bend, polygon");
+            "channel, bend, polygon, region");
 }
 
 TEST(CaseFileError, MissingKeyIsNamedWithItsMeaning) {

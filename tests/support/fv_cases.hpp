@@ -12,8 +12,11 @@
 #include <functional>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "flow/fv/fv_engine.hpp"
 #include "io/case.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -180,6 +183,115 @@ inline ThackerRun run_thacker(int n, double periods, double thin_depth = 0.0) {
                         [end](const Vec2& p) { return T::depth(p.x(), p.y(), end) * T::u(end); });
   r.volume_change = (balance.volume - balance.initial_volume) / balance.initial_volume;
   r.balance = balance.relative_error();
+  r.seconds = clock.seconds();
+  return r;
+}
+
+/// Rain on a tilted plane (fv_rain_on_tilted_plane.cpp and its slow part): a plane L long and B
+/// wide falling at slope S along x, Manning's n, dry at t = 0, rain i from t = 0 on; walls on
+/// three sides, the lower end x = L open (RainPlaneOutlet). The kinematic wave's outflow per
+/// unit width there
+/// (Overton & Meadows 1976, ch. 4):
+///   q(t) = i L (t / t_e)^(5/3) for t <= t_e, i L after;  t_e = (n L / (sqrt(S) i^(2/3)))^(3/5),
+/// the equilibrium depth at the lower end H_0 = (i L n / sqrt(S))^(3/5), and the kinematic wave
+/// number k = S L / (H_0 F_0^2) = g n^2 L / H_0^(4/3) (F_0^2 = u_0^2 / (g H_0), u_0 Manning's).
+struct RainPlane {
+  static constexpr double L = 100.0, B = 2.0;                  // [m]
+  static constexpr double S = 0.01;                            // [-]
+  static constexpr double n = 0.03;                            // [s m^-1/3]
+  static constexpr double i_mm_h = 100.0;                      // [mm/h]
+  static double i() { return i_mm_h * millimetres_per_hour; }  // [m/s]
+  static double t_e() {                                        // [s]
+    return std::pow(n * L / (std::sqrt(S) * std::pow(i(), 2.0 / 3.0)), 0.6);
+  }
+  static double H_0() { return std::pow(i() * L * n / std::sqrt(S), 0.6); }  // [m]
+  static double kinematic_number() { return gravity * n * n * L / std::pow(H_0(), 4.0 / 3.0); }
+  /// The mean of q over [t0, t1] [m^2/s]: int q = i L t_e (3/8) (t/t_e)^(8/3) up to t_e.
+  static double q_mean(double t0, double t1) {
+    const auto integral = [](double t) {
+      const double te = t_e();
+      return t <= te ? i() * L * te * 0.375 * std::pow(t / te, 8.0 / 3.0)
+                     : i() * L * (0.375 * te + (t - te));
+    };
+    return (integral(t1) - integral(t0)) / (t1 - t0);
+  }
+};
+
+/// What one run of the rain plane measures: the outflow over a coupling step against the
+/// kinematic wave's mean over it, at t_e / 2, 3 t_e / 4 and t_e, and against i L B at 3 t_e;
+/// and at t_e / 2 the largest relative error of the depth and of the unit discharge over the
+/// plateau x in [60, 95] m, where the kinematic wave has h = i t and Manning's q(h).
+struct RainPlaneRun {
+  int cells;
+  double kinematic_number, t_e;                                           // [-], [s]
+  double ratio_half, ratio_three_quarters, ratio_t_e, ratio_equilibrium;  // [-]
+  double plateau_depth, plateau_discharge;                                // [-]
+  double balance;                                                         // [-]
+  double seconds;
+};
+
+/// The largest relative errors of h against i t and of hu against Manning's q(i t) over the
+/// cells with x in [60, 95] m at time t [s] (before t_e / 2^(3/5), when all of them are on the
+/// kinematic wave's plateau).
+inline std::pair<double, double> rain_plateau_errors(const FvEngine& engine, double t) {
+  using P = RainPlane;
+  const double h = P::i() * t, q = std::sqrt(P::S) / P::n * std::pow(h, 5.0 / 3.0);
+  const CellMesh& cells = engine.solver().cells();
+  const ConservedState& U = engine.solver().state();
+  double depth = 0.0, discharge = 0.0;
+  for (int k = 0; k < cells.cell_count; ++k) {
+    const double x = cells.centroid[k].x();
+    if (x < 60.0 || x > 95.0) continue;
+    depth = std::max(depth, std::abs(U.h[k] - h) / h);
+    discharge = std::max(discharge, std::abs(U.hu[k] - q) / q);
+  }
+  return {depth, discharge};
+}
+
+/// The rain plane's lower end: `free` (transmissive), or an overfall: an elevation boundary far
+/// below the bed, where the water leaves at critical depth (docs/model.md "Boundaries").
+enum class RainPlaneOutlet { free, overfall };
+
+/// `nx` x 1 rectangles of two triangles along the plane; coupling steps of t_e / 200.
+inline RainPlaneRun run_rain_plane(int nx, RainPlaneOutlet outlet_kind = RainPlaneOutlet::free) {
+  using P = RainPlane;
+  const Stopwatch clock;
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, P::L, P::B, nx, 1, true});
+  Case c = fv_case({"left", "bottom", "top"});
+  if (outlet_kind == RainPlaneOutlet::free)
+    c.flow.boundaries.push_back({BoundaryCondition::Kind::free, "right", {}, {}});
+  else
+    c.flow.boundaries.push_back(
+        {BoundaryCondition::Kind::elevation, "right", TimeSeries(-P::S * P::L - 5.0), {}});
+  c.bed.kind = BedConfig::Kind::slope;
+  c.bed.slope = Vec2(P::S, 0.0);
+  c.flow.friction = FrictionLaw::manning;
+  c.flow.friction_coefficient = P::n;
+  c.flow.initial_eta_start = c.flow.initial_eta_end = -10.0;  // below the bed: dry
+  c.flow.rain.enabled = true;
+  c.flow.rain.intensity = TimeSeries(P::i_mm_h);
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  const int outlet = mesh.find_group("right");
+  const double dt = P::t_e() / 200.0;
+  RainPlaneRun r{};
+  r.cells = engine.solver().cells().cell_count;
+  r.kinematic_number = P::kinematic_number();
+  r.t_e = P::t_e();
+  for (int k = 1; k <= 600; ++k) {
+    const double out_before = engine.water_balance().group_outflow[outlet];
+    engine.step(dt);
+    const double Q = (engine.water_balance().group_outflow[outlet] - out_before) / dt;  // [m^3/s]
+    const double ratio = Q / (P::B * P::q_mean((k - 1) * dt, k * dt));
+    if (k == 100) {
+      r.ratio_half = ratio;
+      std::tie(r.plateau_depth, r.plateau_discharge) = rain_plateau_errors(engine, engine.time());
+    }
+    if (k == 150) r.ratio_three_quarters = ratio;
+    if (k == 200) r.ratio_t_e = ratio;
+    if (k == 600) r.ratio_equilibrium = Q / (P::i() * P::L * P::B);
+  }
+  r.balance = engine.water_balance().relative_error();
   r.seconds = clock.seconds();
   return r;
 }

@@ -18,7 +18,17 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
       options_(std::move(options)),
       bc_(resolve_boundary_conditions(mesh, flow_case.flow, flow_case.file)),
       solver_(
-          {.kind = options_.linear_solver, .reuse_factorisation = options_.reuse_factorisation}) {}
+          {.kind = options_.linear_solver, .reuse_factorisation = options_.reuse_factorisation}) {
+  const RainConfig& rain = flow_case.flow.rain;
+  if (rain.enabled) {
+    const std::string where = flow_case.file.empty() ? "case" : flow_case.file;
+    const std::string at = rain.line > 0 ? fmt::format("{}:{}", where, rain.line) : where;
+    throw_input_error(
+        "{}: flow.rain: rain is supported by 'engine: fv' only; the FEM engine (engine: fem) "
+        "has no rain or infiltration source",
+        at);
+  }
+}
 
 // ---- setup ----------------------------------------------------------------------------------
 

@@ -20,10 +20,10 @@ void FvEngine::initialize() {
   solver_.initialize();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);
   envelope_.update(solver_.state().h, solver_.state().hu, solver_.state().hv, 0.0, 0.0,
-                   solver_.dry_depth());
+                   case_.flow.fv.velocity_depth);
   solver_.set_sub_step_observer([this](double t, double dt) {
     const ConservedState& U = solver_.state();
-    envelope_.update(U.h, U.hu, U.hv, t, dt, solver_.dry_depth());
+    envelope_.update(U.h, U.hu, U.hv, t, dt, case_.flow.fv.velocity_depth);
   });
   field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed());
   field_->reset_to_state();
@@ -61,7 +61,7 @@ void FvEngine::settle(const TimeConfig& time) {
   solver_.set_state(steady);
   solver_.restart_water_balance();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);  // the run starts now
-  envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0, solver_.dry_depth());
+  envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0, case_.flow.fv.velocity_depth);
   field_->reset_to_state();
   nodal_valid_ = false;
 }

@@ -39,7 +39,8 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case)
       case_(flow_case),
       cells_(build_cell_mesh(mesh, flow_case.flow.fv.cells)),
       boundaries_(FvBoundaries::resolve(mesh, flow_case.flow)),
-      friction_(FrictionModel::from(flow_case.flow)) {
+      friction_(FrictionModel::from(flow_case.flow)),
+      rain_(flow_case.flow.rain, cells_) {
   const FlowConfig& flow = flow_case.flow;
   g_ = flow.gravity;
   dry_depth_ = flow.dry_depth;
@@ -253,8 +254,13 @@ void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
   sum_cell_rates(U);
 }
 
-// (M-14) friction, implicit in the velocity: (hu)^{n+1} = (hu)* / (1 + dt gamma), with
-// gamma = c_f |u*| / H (friction.hpp) >= 0: the flow slows, never turns round.
+// (M-14) friction, backward Euler in the velocity: u^{n+1} = u* - dt c_f |u^{n+1}| u^{n+1} / H,
+// with c_f and H at the sub-step's depth. u^{n+1} is parallel to u*, and its speed s solves
+//   s (1 + b s) = |u*|,  b = dt c_f / H   =>   s = 2 |u*| / (1 + sqrt(1 + 4 b |u*|)),
+// so (hu)^{n+1} = (hu)* 2 / (1 + sqrt(1 + 4 dt gamma)), gamma = c_f |u*| / H = rate (friction.hpp).
+// The factor is in (0, 1]: the flow slows, never turns round; and a flow in which the stages'
+// drive balances friction (uniform flow, a film under rain on a slope) is its fixed point
+// whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
 void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   if (friction_.law == FrictionLaw::none) return;
   const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
@@ -264,10 +270,16 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
     if (h <= 0.0) continue;
     const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
     const double speed = std::sqrt(u * u + v * v);
-    const double factor = 1.0 / (1.0 + dt * friction_.rate(speed, h));
+    const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * friction_.rate(speed, h)));
     U.hu[i] *= factor;
     U.hv[i] *= factor;
   }
+}
+
+// (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
+void FiniteVolumeSolver::apply_infiltration(ConservedState& U, double dt) {
+  if (!rain_.infiltrating()) return;
+  balance_.infiltration += rain_.infiltrate(U.h, U.hu, U.hv, dt);
 }
 
 // ---- stepping -----------------------------------------------------------------------------
@@ -277,17 +289,20 @@ double FiniteVolumeSolver::courant_step() const {
   return stage_courant_step_;
 }
 
-// out = a U + b (y + dt L(y)), L evaluated last (rate_): the Runge-Kutta stages. Returns true
-// when a depth came out negative or a value not finite (clamp_round_off then looks at every
-// cell). The balance is counted once per sub-step, with the weights of the whole step:
-// U^{n+1} = U^n + dt/2 (L(U^n) + L(U1)), so each stage's boundary outflow counts half.
+// out = a U + b (y + dt L(y) + R), L evaluated last (rate_), R the sub-step's rain
+// (rain_depth_ w_i): the Runge-Kutta stages. Returns true when a depth came out negative or a
+// value not finite (clamp_round_off then looks at every cell). The balance is counted once per
+// sub-step, with the weights of the whole step: U^{n+1} = U^n + dt/2 (L(U^n) + L(U1)) + R, so
+// each stage's boundary outflow counts half (the rain is counted whole by advance).
 bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState& y,
                                    ConservedState& out, double a, double b, double dt) {
   const int n = cells_.cell_count;
+  const double rain = rain_depth_;  // [m] times w_i
+  const std::vector<double>& w = rain_.weights();
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
   for (int i = 0; i < n; ++i) {
-    out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i]);
+    out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i] + rain * w[i]);
     out.hu[i] = a * U.hu[i] + b * (y.hu[i] + dt * rate_hu_[i]);
     out.hv[i] = a * U.hv[i] + b * (y.hv[i] + dt * rate_hv_[i]);
     suspect = suspect || !(out.h[i] >= 0.0) || !std::isfinite(out.hu[i] + out.hv[i]);
@@ -303,7 +318,13 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // Sub-steps of dt = min(courant * Courant step, what is left), each retried at half the step
 // when it leaves a negative depth or a value that is not finite: the Courant limit with
 // courant <= 0.5 guarantees positive depths (model.md (M-16)); larger values, stable and twice
-// as fast, rely on this retry at the rare fronts where positivity needs the smaller step.
+// as fast, rely on this retry at the rare fronts where positivity needs the smaller step. A
+// domain dry and still has no Courant step (no wave speed): rain on it takes what is left of dt
+// in one sub-step, halved on retry like the others.
+//
+// Rain (M-17) enters both stages as the constant R = w_i int_t^{t+dt} r: Heun's weights add it
+// once, exactly the hyetograph's depth, and since R >= 0 it never makes a depth negative.
+// Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
   const double t_end = U_.time + dt;
   U1_.h.resize(U_.h.size());
@@ -313,12 +334,13 @@ void FiniteVolumeSolver::advance(double dt) {
   while (U_.time < t_end - 1e-12 * dt) {
     const double t = U_.time;
     const WaterBalance balance_before = balance_;
-    // Stage 1: U1 = U + dt L(U), dt from the Courant limit of L(U)'s wave speeds.
+    // Stage 1: U1 = U + dt L(U) + R, dt from the Courant limit of L(U)'s wave speeds.
     evaluate(U_, t);
     const double dt_courant = stage_courant_step_;
-    const double h = std::min(shrink * dt_courant, t_end - t);
+    const double h = shrink * std::min(dt_courant, t_end - t);
+    rain_depth_ = rain_.depth(t, t + h);
     int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5) : -1;
-    // Stage 2: U^{n+1} = (U + U1 + dt L(U1)) / 2, then friction.
+    // Stage 2: U^{n+1} = (U + U1 + dt L(U1) + R) / 2, then infiltration and friction.
     if (bad < 0) {
       evaluate(U1_, t + h);
       if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0);
@@ -330,9 +352,11 @@ void FiniteVolumeSolver::advance(double dt) {
       if (shrink < 1.0 / 64.0) fail_at(U1_, bad, t + h);
       continue;
     }
+    balance_.rain += rain_depth_ * rain_.weighted_area();
+    apply_infiltration(U1_, h);
     apply_friction(U1_, h);
     std::swap(U_, U1_);
-    U_.time = t_end - t <= shrink * dt_courant ? t_end : t + h;
+    U_.time = h == t_end - t ? t_end : t + h;
     shrink = 1.0;
     ++stats_.count;
     stats_.total += h;

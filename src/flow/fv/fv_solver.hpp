@@ -3,13 +3,15 @@
 // conservative form of (M-1) in (h, hu, hv) on the cells of cell_mesh.hpp, integrated over a
 // coupling step in as many explicit sub-steps as the Courant limit asks. One sub-step:
 //
-//   U1      = U^n + dt L(U^n)                      SSP Runge-Kutta 2 (Heun), (M-13)
-//   U2      = (U^n + U1 + dt L(U1)) / 2
-//   U^{n+1} = friction(U2, dt)                     implicit, never reverses the flow (M-14)
+//   U1      = U^n + dt L(U^n) + R                  SSP Runge-Kutta 2 (Heun), (M-13)
+//   U2      = (U^n + U1 + dt L(U1) + R) / 2
+//   U^{n+1} = friction(infiltration(U2, dt), dt)   implicit, never reverses the flow (M-14)
 //
 // where L is the finite-volume operator:  reconstruct (reconstruction.hpp) -> edge fluxes
 // (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
-// states, fv_boundary.hpp) -> sum per cell with the bed-slope, Coriolis, wind and body sources.
+// states, fv_boundary.hpp) -> sum per cell with the bed-slope, Coriolis, wind and body sources;
+// R = (w_i int r dt, 0, 0) the rain of the sub-step and infiltration its loss (rain_source.hpp,
+// (M-17)).
 #include <functional>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "flow/friction.hpp"
 #include "flow/fv/cell_mesh.hpp"
 #include "flow/fv/fv_boundary.hpp"
+#include "flow/fv/rain_source.hpp"
 #include "flow/fv/reconstruction.hpp"
 #include "flow/water_balance.hpp"
 #include "io/case.hpp"
@@ -64,6 +67,10 @@ class FiniteVolumeSolver {
     sub_step_observer_ = std::move(f);
   }
   const std::vector<Vec2>& cell_forces() const { return cell_force_; }
+  /// The weight w_i [-] of each cell by which the case's rain intensity is multiplied there
+  /// (M-17): one per cell, finite and >= 0; 1 everywhere unless set (rain varying over the domain).
+  void set_rain_weights(std::vector<double> weights) { rain_.set_weights(std::move(weights)); }
+  const RainSource& rain() const { return rain_; }
 
   /// The state's cell values and limited gradients (what the bodies sample).
   void fill_field(CellField& field) const;
@@ -91,6 +98,7 @@ class FiniteVolumeSolver {
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
+  void apply_infiltration(ConservedState& U, double dt);
   void load_cells(const ConservedState& U) const;  // desingularised velocities into field_
   int clamp_round_off(ConservedState& U, double weight);
   [[noreturn]] void fail_at(const ConservedState& U, int cell, double t) const;
@@ -114,6 +122,8 @@ class FiniteVolumeSolver {
   // Scratch of the operator L (mutable: evaluating L, as courant_step does, changes no state).
   mutable CellField field_;       // the stage's reconstruction
   std::vector<Vec2> cell_force_;  // [N] body reactions
+  RainSource rain_;
+  double rain_depth_ = 0.0;  // [m] int r dt over the current sub-step (times w_i per cell)
   // Per edge: flux through it along its normal (mass [m^2/s], momentum [m^3/s^2]), and the
   // hydrostatic corrections g/2 (h_e^2 - h*_e^2) of its two sides [m^3/s^2].
   mutable std::vector<double> flux_mass_, flux_x_, flux_y_, side_left_, side_right_;

@@ -72,6 +72,19 @@ TEST(FlowInput, FreeBoundaryIsForTheFiniteVolumeEngineOnly) {
   EXPECT_STREQ(boundary_kind_name(BoundaryCondition::Kind::free), "free");
 }
 
+TEST(FlowInput, RainIsForTheFiniteVolumeEngineOnly) {
+  const Mesh mesh = make_rectangle_mesh({0, 0, 10, 4, 5, 2, true});
+  Case c = wet_case();
+  c.flow.boundaries = {{BoundaryCondition::Kind::wall, "left", {}, {}},
+                       {BoundaryCondition::Kind::wall, "right", {}, {}}};
+  c.flow.rain.enabled = true;
+  c.flow.rain.intensity = TimeSeries(20.0);
+  c.flow.rain.line = 9;
+  EXPECT_EQ(input_error_of([&] { ShallowWaterSolver s(mesh, c); }),
+            "basin.yaml:9: flow.rain: rain is supported by 'engine: fv' only; the FEM engine "
+            "(engine: fem) has no rain or infiltration source");
+}
+
 // The FEM cannot start dry: a formula leaving vertices below the dry depth is the same error as
 // a flat surface below the bed (the dam break's dry half).
 TEST(FlowInput, FormulaThatStartsDryNamesTheNode) {

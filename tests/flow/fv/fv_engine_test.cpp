@@ -14,8 +14,8 @@
 namespace flotsam {
 namespace {
 
-// A dam break over a sloping bed with Manning friction, inflow at the left and a level held at
-// the right: every part of the state and of the balance moves.
+// A dam break over a sloping bed with Manning friction, inflow at the left, a level held at the
+// right, rain and infiltration: every part of the state and of the balance moves.
 Case moving_case() {
   Case c = test::closed_basin_case(0.0);
   c.flow.initial_eta = Expression("x < 4 ? 1.5 : 1", "test: flow.initial.eta");
@@ -27,6 +27,9 @@ Case moving_case() {
                                    TimeSeries(0.0)};
   test::condition_of(c, "right") = {BoundaryCondition::Kind::elevation, "right", TimeSeries(1.0),
                                     TimeSeries(0.0)};
+  c.flow.rain.enabled = true;
+  c.flow.rain.intensity = TimeSeries({{0.0, 100.0}, {1.0, 500.0}});  // [mm/h]
+  c.flow.rain.infiltration = 50.0;                                   // [mm/h]
   return c;
 }
 
@@ -62,6 +65,10 @@ TEST(FvEngine, CheckpointRoundTripContinuesBitForBit) {
   EXPECT_EQ(wa.volume, wb.volume);
   EXPECT_EQ(wa.outflow, wb.outflow);
   EXPECT_EQ(wa.source, wb.source);
+  ASSERT_GT(wa.rain, 0.0);
+  ASSERT_GT(wa.infiltration, 0.0);
+  EXPECT_EQ(wa.rain, wb.rain);
+  EXPECT_EQ(wa.infiltration, wb.infiltration);
   EXPECT_EQ(wa.group_outflow, wb.group_outflow);
   EXPECT_EQ(running.solver().sub_steps().count, restarted.solver().sub_steps().count);
   EXPECT_EQ(running.solver().sub_steps().smallest, restarted.solver().sub_steps().smallest);

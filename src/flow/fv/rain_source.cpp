@@ -1,0 +1,71 @@
+#include "flow/fv/rain_source.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <utility>
+
+#include "core/constants.hpp"
+
+namespace flotsam {
+
+namespace {
+
+// The case's hyetograph [mm/h] in m/s.
+TimeSeries in_metres_per_second(const TimeSeries& mm_per_hour) {
+  std::vector<std::pair<double, double>> points = mm_per_hour.points();
+  for (auto& point : points) point.second *= millimetres_per_hour;
+  return TimeSeries(std::move(points));
+}
+
+}  // namespace
+
+RainSource::RainSource(const RainConfig& rain, const CellMesh& cells)
+    : enabled_(rain.enabled),
+      intensity_(in_metres_per_second(rain.intensity)),
+      f_(rain.enabled ? rain.infiltration * millimetres_per_hour : 0.0),
+      area_(cells.area) {
+  set_weights(std::vector<double>(cells.cell_count, 1.0));
+}
+
+void RainSource::set_weights(std::vector<double> weights) {
+  assert(weights.size() == area_.size());
+  weight_ = std::move(weights);
+  weighted_area_ = 0.0;
+  for (std::size_t i = 0; i < weight_.size(); ++i) {
+    assert(std::isfinite(weight_[i]) && weight_[i] >= 0.0);
+    weighted_area_ += area_[i] * weight_[i];
+  }
+}
+
+double RainSource::depth(double t0, double t1) const {
+  return enabled_ ? intensity_.integral(t0, t1) : 0.0;
+}
+
+// (M-17) infiltration: h_i -> h_i - min(h_i, f dt). A cell keeps its velocity (the water that
+// soaks away takes its own momentum with it), so hu and hv scale as h; emptied, it is at rest.
+double RainSource::infiltrate(std::vector<double>& h, std::vector<double>& hu,
+                              std::vector<double>& hv, double dt) {
+  const double loss = f_ * dt;  // [m]
+  const int n = static_cast<int>(h.size());
+  infiltrated_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    const double h_old = h[i];
+    if (h_old <= loss) {
+      h[i] = hu[i] = hv[i] = 0.0;
+      infiltrated_[i] = h_old;
+      continue;
+    }
+    h[i] = h_old - loss;
+    const double keep = h[i] / h_old;
+    hu[i] *= keep;
+    hv[i] *= keep;
+    infiltrated_[i] = h_old - h[i];  // what the cell lost, as stored
+  }
+  double volume = 0.0;  // [m^3]
+  for (int i = 0; i < n; ++i) volume += area_[i] * infiltrated_[i];
+  return volume;
+}
+
+}  // namespace flotsam
