@@ -22,6 +22,13 @@ struct DatasetCloser {
 };
 using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
 
+/// GeoPackage writes layers without a coordinate system as "Undefined geographic SRS" or
+/// "Undefined Cartesian SRS": those count as none.
+inline bool is_undefined(const OGRSpatialReference& srs) {
+  const char* name = srs.GetName();
+  return name && std::string(name).rfind("Undefined", 0) == 0;
+}
+
 inline std::string wkt_of(const OGRSpatialReference& srs) {
   char* wkt = nullptr;
   srs.exportToWkt(&wkt);

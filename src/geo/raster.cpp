@@ -82,7 +82,7 @@ Raster Raster::read(const std::string& path, const std::string& origin) {
   if (grid.transform[1] * grid.transform[5] - grid.transform[2] * grid.transform[4] == 0.0)
     throw_input_error("{}: '{}' has a degenerate geotransform (pixels of zero area)", origin, path);
   const OGRSpatialReference* srs = d->GetSpatialRef();
-  if (srs) {
+  if (srs && !gdal::is_undefined(*srs)) {
     if (srs->IsGeographic())
       throw_input_error(
           "{}: '{}' is in geographic coordinates (degrees); expected a projected coordinate "

@@ -56,7 +56,7 @@ VectorLayer read_vector_layer(const std::string& path, const std::string& layer,
   }
   const std::string layer_name = l->GetName();
   VectorLayer out;
-  if (const OGRSpatialReference* srs = l->GetSpatialRef()) {
+  if (const OGRSpatialReference* srs = l->GetSpatialRef(); srs && !gdal::is_undefined(*srs)) {
     if (srs->IsGeographic())
       throw_input_error(
           "{}: layer '{}' of '{}' is in geographic coordinates (degrees); expected a projected "

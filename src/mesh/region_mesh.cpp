@@ -172,11 +172,11 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
   std::vector<std::string> dropped;
   for (const NamedRing& r : g.buildings) {
     NamedRing b{cleaned(r.points, g.merge_distance), r.name};
+    if (b.points.size() >= 3) check_simple(b);  // a crossed footprint is an error, not a sliver
     if (b.points.size() < 3 || std::abs(signed_area(b.points)) < g.min_building_area) {
       dropped.push_back(b.name);
       continue;
     }
-    check_simple(b);
     holes.push_back(make_hole(b.points, b.name));
     buildings.push_back(std::move(b));
   }

@@ -14,6 +14,7 @@
 #include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "geo/vector_layer.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/point_locator.hpp"
 
@@ -441,6 +442,48 @@ TEST(CaseFile, FloodEnvelopeRastersAndTheirCoordinateSystem) {
   EXPECT_THAT(error_of(edited("  initial: {eta: 1.0}", "  engine: fv\n  initial: {eta: 1.0}") +
                        "crs: nowhere\n"),
               HasSubstr("case.yaml:13: crs: 'nowhere' is not a coordinate system GDAL knows"));
+}
+
+TEST(CaseFile, RegionFromGeodataFilesNamesTheFeaturesOfBadGeometry) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "flotsam_region_case";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  write_polygon_layer((dir / "town.gpkg").string(), "outline",
+                      {{{0, 0}, {200, 0}, {200, 80}, {0, 80}}}, "");
+  write_polygon_layer(
+      (dir / "houses.gpkg").string(), "buildings",
+      {{{50, 20}, {60, 20}, {60, 30}, {50, 30}}, {{55, 25}, {65, 25}, {65, 35}, {55, 35}}}, "");
+  const std::string region = R"(mesh:
+  region:
+    outline: {file: town.gpkg, layer: outline}
+    boundaries: {inflow: [[0, 80], [0, 0]], outflow: [[200, 0], [200, 80]]}
+    buildings: houses.gpkg
+    mesh_size: 10
+)";
+  const std::string rest = base_case.substr(base_case.find("flow:"));
+  const Case c = parse_case(region + rest, (dir / "case.yaml").string());
+  ASSERT_EQ(c.mesh.kind, MeshSource::Kind::region);
+  EXPECT_EQ(c.mesh.region.outline.points.size(), 4u);
+  EXPECT_EQ(c.mesh.region.lines.size(), 2u);
+  EXPECT_EQ(c.mesh.region.buildings.size(), 2u);
+  std::string message = "no error";
+  try {
+    generate_mesh(c.mesh);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, HasSubstr("houses.gpkg, layer 'buildings', feature 1 and houses.gpkg, "
+                                 "layer 'buildings', feature 2 overlap"));
+  message = "no error";
+  try {
+    parse_case(region + "    steep: {slope: 0.1, mesh_size: 2}\n" + rest,
+               (dir / "case.yaml").string());
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, HasSubstr("case.yaml:7: mesh.region.steep: refining where the terrain is "
+                                 "steep needs a terrain: bed.raster"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CaseFile, InitialStateMayBeFormulas) {
