@@ -25,7 +25,7 @@ void FloodEnvelope::update(const std::vector<double>& h, const std::vector<doubl
   const int n = size();
 #pragma omp parallel for schedule(static) if (n >= 20000)
   for (int i = 0; i < n; ++i) {
-    const double q = std::hypot(hu[i], hv[i]);  // H |u| [m^2/s]
+    const double q = std::sqrt(hu[i] * hu[i] + hv[i] * hv[i]);  // H |u| [m^2/s]
     max_depth[i] = std::max(max_depth[i], h[i]);
     max_unit_discharge[i] = std::max(max_unit_discharge[i], q);
     if (h[i] > velocity_depth) max_speed[i] = std::max(max_speed[i], q / h[i]);
@@ -60,14 +60,19 @@ void FloodEnvelope::restore(ArchiveReader& r, const std::string& prefix) {
   }
 }
 
-std::vector<std::string> write_envelope_rasters(const FloodEnvelope& envelope,
-                                                const RasterGrid& grid, const CellLocator& cell_at,
-                                                const std::string& prefix) {
+std::vector<int> pixel_cells(const RasterGrid& grid, const CellLocator& cell_at) {
   std::vector<int> cell(static_cast<std::size_t>(grid.columns) * grid.rows);
   int hint = -1;
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.columns; ++c)
       cell[static_cast<std::size_t>(r) * grid.columns + c] = cell_at(grid.centre(c, r), hint);
+  return cell;
+}
+
+std::vector<std::string> write_envelope_rasters(const FloodEnvelope& envelope,
+                                                const RasterGrid& grid,
+                                                const std::vector<int>& cells,
+                                                const std::string& prefix) {
   std::vector<std::string> written;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (auto [name, values] :
@@ -75,9 +80,9 @@ std::vector<std::string> write_envelope_rasters(const FloodEnvelope& envelope,
         std::pair{"max_unit_discharge", &envelope.max_unit_discharge},
         std::pair{"arrival_time", &envelope.arrival},
         std::pair{"wet_duration", &envelope.wet_duration}}) {
-    std::vector<double> pixels(cell.size());
-    for (std::size_t k = 0; k < cell.size(); ++k)
-      pixels[k] = cell[k] < 0 ? nan : (*values)[cell[k]];
+    std::vector<double> pixels(cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      pixels[k] = cells[k] < 0 ? nan : (*values)[cells[k]];
     written.push_back(prefix + "_" + name + ".tif");
     write_geotiff(written.back(), grid, pixels);
   }

@@ -42,12 +42,16 @@ struct FloodEnvelope {
 /// The cell holding a point (-1 outside the domain), walking from `hint`, which it updates.
 using CellLocator = std::function<int(const Vec2& p, int& hint)>;
 
+/// The cell under each pixel centre of `grid` (row-major; -1 outside the domain).
+std::vector<int> pixel_cells(const RasterGrid& grid, const CellLocator& cell_at);
+
 /// Writes the envelopes on `grid` as GeoTIFFs `prefix`_max_depth.tif, _max_speed.tif,
-/// _max_unit_discharge.tif, _arrival_time.tif, _wet_duration.tif: each pixel the value of the
-/// cell holding its centre; nodata outside the domain, and where the cell was never wet for the
-/// arrival time. Returns the files written.
+/// _max_unit_discharge.tif, _arrival_time.tif, _wet_duration.tif: each pixel the value of its
+/// cell (`cells`, from pixel_cells); nodata outside the domain, and where the cell was never wet
+/// for the arrival time. Returns the files written.
 std::vector<std::string> write_envelope_rasters(const FloodEnvelope& envelope,
-                                                const RasterGrid& grid, const CellLocator& cell_at,
+                                                const RasterGrid& grid,
+                                                const std::vector<int>& cells,
                                                 const std::string& prefix);
 
 }  // namespace flotsam

@@ -4,8 +4,11 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
+
+#include "core/error.hpp"
 
 namespace flotsam::gdal {
 
@@ -21,6 +24,23 @@ struct DatasetCloser {
   void operator()(GDALDataset* d) const { GDALClose(d); }
 };
 using Dataset = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+/// Opens `path` read-only as a raster (GDAL_OF_RASTER) or vector (GDAL_OF_VECTOR) dataset, or
+/// an InputError naming `origin` and the file: "the <kind> '<path>' does not exist", "'<path>'
+/// is not a <kind> GDAL can read (<GDAL's reason>)".
+inline Dataset open_dataset(const std::string& path, unsigned int flags, const std::string& origin,
+                            const char* kind) {
+  register_drivers();
+  if (!std::filesystem::exists(path))
+    throw_input_error("{}: the {} '{}' does not exist", origin, kind, path);
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  Dataset d(GDALDataset::Open(path.c_str(), flags | GDAL_OF_READONLY));
+  CPLPopErrorHandler();
+  if (!d)
+    throw_input_error("{}: '{}' is not a {} GDAL can read ({})", origin, path, kind,
+                      CPLGetLastErrorMsg());
+  return d;
+}
 
 /// GeoPackage writes layers without a coordinate system as "Undefined geographic SRS" or
 /// "Undefined Cartesian SRS": those count as none.

@@ -61,15 +61,7 @@ Raster::Raster(RasterGrid grid, std::vector<double> values, std::optional<double
     : grid_(std::move(grid)), values_(std::move(values)), nodata_(nodata) {}
 
 Raster Raster::read(const std::string& path, const std::string& origin) {
-  register_drivers();
-  if (!std::filesystem::exists(path))
-    throw_input_error("{}: the raster '{}' does not exist", origin, path);
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  Dataset d(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-  CPLPopErrorHandler();
-  if (!d)
-    throw_input_error("{}: '{}' is not a raster GDAL can read ({})", origin, path,
-                      CPLGetLastErrorMsg());
+  const Dataset d = gdal::open_dataset(path, GDAL_OF_RASTER, origin, "raster");
   if (d->GetRasterCount() < 1) throw_input_error("{}: '{}' has no raster band", origin, path);
   RasterGrid grid;
   grid.columns = d->GetRasterXSize();

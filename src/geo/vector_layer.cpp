@@ -38,15 +38,7 @@ void add_polygon(const OGRPolygon& polygon, const std::string& name, std::option
 VectorLayer read_vector_layer(const std::string& path, const std::string& layer,
                               const std::string& origin, const std::string& value_field,
                               const std::string& label_field) {
-  gdal::register_drivers();
-  if (!std::filesystem::exists(path))
-    throw_input_error("{}: the vector file '{}' does not exist", origin, path);
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  Dataset d(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  CPLPopErrorHandler();
-  if (!d)
-    throw_input_error("{}: '{}' is not a vector file GDAL can read ({})", origin, path,
-                      CPLGetLastErrorMsg());
+  const Dataset d = gdal::open_dataset(path, GDAL_OF_VECTOR, origin, "vector file");
   OGRLayer* l = layer.empty() ? d->GetLayer(0) : d->GetLayerByName(layer.c_str());
   if (!l) {
     std::vector<std::string> names;

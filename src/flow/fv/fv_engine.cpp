@@ -197,9 +197,10 @@ std::string FvEngine::summary() const {
 
 std::vector<std::string> FvEngine::write_envelope_rasters(const std::string& prefix,
                                                           const RasterGrid& grid) const {
-  return flotsam::write_envelope_rasters(
-      envelope_, grid, [this](const Vec2& p, int& hint) { return field_->cell_of(p, hint); },
-      prefix);
+  if (raster_cells_.empty())  // the grid is the run's: its cells are found once
+    raster_cells_ =
+        pixel_cells(grid, [this](const Vec2& p, int& hint) { return field_->cell_of(p, hint); });
+  return flotsam::write_envelope_rasters(envelope_, grid, raster_cells_, prefix);
 }
 
 }  // namespace flotsam

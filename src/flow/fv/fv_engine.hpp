@@ -44,8 +44,9 @@ class FvEngine final : public FlowEngine {
   const Case& case_;
   FiniteVolumeSolver solver_;
   std::unique_ptr<FvFlowField> field_;
-  FloodEnvelope envelope_;                       // per cell, updated after every sub-step
-  mutable FlowState nodal_;                      // the nodal view, computed when asked
+  FloodEnvelope envelope_;                 // per cell, updated after every sub-step
+  mutable std::vector<int> raster_cells_;  // the cell under each pixel of the envelopes' rasters
+  mutable FlowState nodal_;                // the nodal view, computed when asked
   mutable std::vector<std::uint8_t> nodal_wet_;  // per node: a wet cell touches it
   mutable bool nodal_valid_ = false;
 };
