@@ -50,7 +50,8 @@ test-sanitize: deps
 
 # The paper's bridge case, run and drawn into out/bridge_piers/. The demo replaces its own
 # earlier results there (--overwrite); nothing else in out/ is touched.
-demo: build
+demo: deps $(BUILD)/build.ninja
+	cmake --build $(BUILD) -j $(JOBS) --target flotsam  # only the program, not the tests
 	$(BUILD)/flotsam mesh examples/bridge_piers.yaml -o out/bridge_piers.msh \
 	    --vtu out/bridge_piers_mesh.vtu --overwrite
 	$(BUILD)/flotsam run examples/bridge_piers.yaml --overwrite
