@@ -285,6 +285,18 @@ std::string read_name(const YamlMap& root, const std::string& file_name) {
                     "the output folder), got '{}'",
                     name));
   }
+  // A name of dots only ('.', '..') would be the output folder's parent or itself; a name that
+  // starts with one would hide the run's files.
+  if (name.front() == '.')
+    value->fail(fmt::format(
+        "expected a name that does not start with '.' (it names the output folder), got '{}'",
+        name));
+  constexpr std::size_t longest = 200;  // [characters] file names stay below 255 bytes
+  if (name.size() > longest)
+    value->fail(
+        fmt::format("expected a name of at most {} characters (it names the output "
+                    "folder and its files), got {}",
+                    longest, name.size()));
   return name;
 }
 

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "mesh/gmsh_model.hpp"
 #include "mesh/gmsh_session.hpp"
@@ -188,7 +189,7 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
     require_positive(source, "a pier's radius", p.radius);
     std::vector<Vec2> polygon;  // the circle as a 64-gon, for the checks
     for (int i = 0; i < 64; ++i) {
-      const double a = 2.0 * 3.14159265358979323846 * i / 64;
+      const double a = 2.0 * pi * i / 64;  // [rad]
       polygon.push_back(p.centre + p.radius * Vec2(std::cos(a), std::sin(a)));
     }
     holes.push_back(make_hole(polygon, fmt::format("pier_{} (centre ({}, {}) m, radius {} m)",

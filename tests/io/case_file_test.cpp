@@ -864,6 +864,12 @@ TEST(CaseFileError, NameMustSuitAFolder) {
   EXPECT_EQ(error_of(appended("name: my river\n")),
             "case.yaml:12: name: expected a name of letters, digits, '_', '-' and '.' (it names "
             "the output folder), got 'my river'");
+  EXPECT_EQ(error_of(appended("name: ..\n")),
+            "case.yaml:12: name: expected a name that does not start with '.' (it names the "
+            "output folder), got '..'");
+  EXPECT_EQ(error_of(appended("name: " + std::string(201, 'a') + "\n")),
+            "case.yaml:12: name: expected a name of at most 200 characters (it names the output "
+            "folder and its files), got 201");
 }
 
 TEST(CaseFileError, TableRowsMustBeStrictlyIncreasing) {
