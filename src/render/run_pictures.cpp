@@ -94,7 +94,18 @@ std::vector<std::string> render_run(const std::string& run_directory, const Pict
   };
 
   std::vector<RunSnapshot> snapshots;
-  for (const auto& file : states) snapshots.push_back(read_run_snapshot(file.string()));
+  for (const auto& file : states) {
+    snapshots.push_back(read_run_snapshot(file.string()));
+    const RunSnapshot& s = snapshots.back();
+    const auto nodes = static_cast<std::size_t>(run.mesh.node_count());
+    const auto vertices = static_cast<std::size_t>(run.mesh.vertex_count);
+    if (s.eta.size() != vertices || s.u.size() != nodes || s.v.size() != nodes ||
+        (!s.wet.empty() && s.wet.size() != nodes))
+      throw_input_error(
+          "'{}' does not belong to the run in '{}': it holds {} surface values and {} velocities, "
+          "the run's mesh {} vertices and {} nodes (a state file copied from another run?)",
+          file.string(), run_directory, s.eta.size(), s.u.size(), vertices, nodes);
+  }
   const RunSnapshot& last = snapshots.back();
   const std::optional<ViewWindow> zoom = pier_window(run.mesh);
 
