@@ -121,6 +121,9 @@ Releaser::Releaser(std::vector<Release> releases, const PlacementCheck& check) :
     if (!r.zone.empty()) {
       if (const std::string defect = polygon_defect(r.zone); !defect.empty())
         throw_input_error("{}.zone: {}", at, defect);
+    } else if (r.line_start == r.line_end) {
+      throw_input_error("{}.line: both ends are ({}, {}) m; a release line needs a length", at,
+                        r.line_start.x(), r.line_start.y());
     }
     check_range(at, "length", r.length_min, r.length_max, true);
     check_range(at, "width", r.width_min, r.width_max, true);
@@ -135,16 +138,28 @@ std::string Releaser::location(int r) const {
   return fmt::format("{}: releases[{}]", where(check_), r);
 }
 
-void Releaser::check_zones(const FlowField& flow, double t) const {
+void Releaser::check_inside(const FlowField& flow, double t) const {
+  constexpr int line_samples = 64;  // points along a line, ends included
   for (std::size_t r = 0; r < lines_.size(); ++r) {
-    const std::vector<Vec2>& zone = lines_[r].release.zone;
+    const Release& rel = lines_[r].release;
     int hint = -1;
-    for (std::size_t k = 0; k < zone.size(); ++k) {
-      if (flow.sample(zone[k], t, hint).inside) continue;
+    for (std::size_t k = 0; k < rel.zone.size(); ++k) {
+      if (flow.sample(rel.zone[k], t, hint).inside) continue;
       throw_input_error(
           "{}.zone: corner {} at ({}, {}) m is outside the domain; a zone's corners must lie in "
           "the mesh",
-          location(static_cast<int>(r)), k + 1, zone[k].x(), zone[k].y());
+          location(static_cast<int>(r)), k + 1, rel.zone[k].x(), rel.zone[k].y());
+    }
+    if (!rel.zone.empty()) continue;
+    for (int k = 0; k < line_samples; ++k) {
+      const Vec2 p = rel.line_start + (k / (line_samples - 1.0)) * (rel.line_end - rel.line_start);
+      if (flow.sample(p, t, hint).inside) continue;
+      throw_input_error(
+          "{}.line: the point ({:.3f}, {:.3f}) m of the line from ({}, {}) to ({}, {}) m is "
+          "outside the domain (beyond a bank, in a pier or a building); a release line must lie "
+          "in the water's domain",
+          location(static_cast<int>(r)), p.x(), p.y(), rel.line_start.x(), rel.line_start.y(),
+          rel.line_end.x(), rel.line_end.y());
     }
   }
 }

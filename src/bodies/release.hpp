@@ -45,11 +45,13 @@ void check_clear_of_bodies(const BodySpec& spec, const BodySet& bodies, const Pl
 class Releaser {
  public:
   /// Checks the releases (rate > 0 unless a count is given, ranges ordered and positive, a zone
-  /// a simple polygon); messages name `releases[k]`, or the case file's line and key.
+  /// a simple polygon, a line of some length); messages name `releases[k]`, or the case file's
+  /// line and key.
   Releaser(std::vector<Release> releases, const PlacementCheck& check);
 
-  /// Checks that every corner of every zone lies in the domain of `flow` at time t.
-  void check_zones(const FlowField& flow, double t) const;
+  /// Checks, before the run writes anything, that every corner of every zone and every line (64
+  /// points along it) lie in the domain of `flow` at time t.
+  void check_inside(const FlowField& flow, double t) const;
 
   /// Appends the bodies whose release times fall in [t0, t1) (and any earlier one not yet
   /// released): t_k = start + k 60/rate (k = 0, 1, ..., t_k <= end), or t_k = start for the

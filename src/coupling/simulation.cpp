@@ -41,7 +41,7 @@ void Simulation::initialize() {
     if (!options_.restart)  // a restart takes its bodies from the checkpoint
       add_explicit_bodies(bodies_, case_.bodies.bodies, flow_->field(), time_, check);
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
-    releaser_->check_zones(flow_->field(), time_);
+    releaser_->check_inside(flow_->field(), time_);
     integrator_ =
         std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
     contacts_ = std::make_unique<ContactWorld>(case_.bodies.contact,

@@ -3,6 +3,7 @@
 // reproducibly from a seed; a zone's bodies are uniform in its polygon.
 #include "bodies/release.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -191,7 +192,7 @@ std::string releaser_error(const Release& r, int source_line = 0) {
   with_line.source_line = source_line;
   try {
     Releaser releaser({line(), with_line}, PlacementCheck{"c.yaml"});
-    releaser.check_zones(channel(), 0.0);
+    releaser.check_inside(channel(), 0.0);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -314,6 +315,20 @@ TEST(Releaser, AZoneOutsideTheDomainIsAnErrorNamingItsCorner) {
   EXPECT_EQ(releaser_error(r, 14),
             "c.yaml:14: bodies.release[1].zone: corner 2 at (120, 10) m is outside the domain; a "
             "zone's corners must lie in the mesh");
+}
+
+TEST(Releaser, ALineOutsideTheDomainOrOfNoLengthIsAnErrorBeforeTheRun) {
+  Release r = line();
+  r.line_start = {50, 40};
+  r.line_end = {50, 60};  // the channel ends at y = 50
+  EXPECT_THAT(releaser_error(r, 9),
+              ::testing::HasSubstr("c.yaml:9: bodies.release[1].line: the point (50.000, 50.159) "
+                                   "m of the line from (50, 40) to (50, 60) m is outside the "
+                                   "domain"));
+  r.line_end = r.line_start;
+  EXPECT_EQ(releaser_error(r, 9),
+            "c.yaml:9: bodies.release[1].line: both ends are (50, 40) m; a release line needs a "
+            "length");
 }
 
 }  // namespace
