@@ -116,13 +116,18 @@ std::optional<double> Raster::bilinear(const Vec2& p) const {
   return (1 - s) * (1 - t) * v00 + s * (1 - t) * v10 + (1 - s) * t * v01 + s * t * v11;
 }
 
-std::optional<double> Raster::nearest(const Vec2& p) const {
+std::optional<std::pair<int, int>> Raster::pixel_of(const Vec2& p) const {
   const Vec2 q = grid_.pixel_coordinates(p);
   if (!(q.x() >= 0.0 && q.x() <= grid_.columns && q.y() >= 0.0 && q.y() <= grid_.rows))
     return std::nullopt;
-  const int c = std::min(static_cast<int>(q.x()), grid_.columns - 1);
-  const int r = std::min(static_cast<int>(q.y()), grid_.rows - 1);
-  const double v = at(c, r);
+  return std::pair{std::min(static_cast<int>(q.x()), grid_.columns - 1),
+                   std::min(static_cast<int>(q.y()), grid_.rows - 1)};
+}
+
+std::optional<double> Raster::nearest(const Vec2& p) const {
+  const auto pixel = pixel_of(p);
+  if (!pixel) return std::nullopt;
+  const double v = at(pixel->first, pixel->second);
   if (is_nodata(v)) return std::nullopt;
   return v;
 }

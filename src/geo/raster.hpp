@@ -14,6 +14,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -53,6 +54,9 @@ class Raster {
   std::optional<double> bilinear(const Vec2& p) const;
   /// The value of the pixel holding p, or none outside the extent or on nodata.
   std::optional<double> nearest(const Vec2& p) const;
+  /// The pixel (column, row) holding p, or none outside the extent (on the far edges, the last
+  /// pixel).
+  std::optional<std::pair<int, int>> pixel_of(const Vec2& p) const;
 
  private:
   RasterGrid grid_;

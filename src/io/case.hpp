@@ -63,13 +63,36 @@ struct FiniteVolumeConfig {
 };
 
 /// Rain on the domain with a constant infiltration loss (flow.rain; finite-volume engine only,
-/// docs/model.md (M-17)). The intensity is uniform over the domain; the engine multiplies it by a
-/// weight per cell, 1 unless set (FiniteVolumeSolver::set_rain_weights).
+/// docs/model.md (M-17)). The engine multiplies the intensity by a weight per cell: the value of
+/// the raster's pixel under the cell's centroid when a raster is given, else 1.
 struct RainConfig {
   bool enabled = false;       // flow.rain given
   TimeSeries intensity;       // i(t) [mm/h]: a constant or a hyetograph, >= 0
   double infiltration = 0.0;  // f [mm/h] >= 0: lost where there is water, never more than it
+  std::shared_ptr<const Raster> raster;  // w [-] per pixel, >= 0, covering every cell; or none
+  std::string raster_origin;             // "case.yaml:7: flow.rain.raster", for messages
   int line = 0;  // line of the key flow.rain in the case file, for messages (0: built in code)
+};
+
+/// A polygon with its own friction coefficient (flow.friction.zones): its outer ring and its
+/// holes, corners in order. `origin` names it in messages: "case.yaml:9: flow.friction.zones[0]",
+/// or "case.yaml:9: flow.friction.zones: landuse.gpkg, layer 'landuse', feature 3".
+struct FrictionZone {
+  std::vector<Vec2> ring;                // [m] a simple polygon
+  std::vector<std::vector<Vec2>> holes;  // [m] not in the zone
+  double coefficient = 0.0;              // n, C or K as flow.friction.law says, > 0
+  std::string origin;
+};
+
+/// Friction varying over the domain (docs/model.md "Friction over the domain"): at each cell
+/// centroid (FV) or element centroid (FEM), the default coefficient, replaced by the raster's
+/// pixel there when it holds a value, replaced by each zone holding the point in turn (the last
+/// one listed wins).
+struct FrictionMapConfig {
+  std::shared_ptr<const Raster> raster;  // the coefficient per pixel (nearest); or none
+  std::string raster_origin;             // "case.yaml:8: flow.friction.raster", for messages
+  std::vector<FrictionZone> zones;       // in the order listed
+  bool empty() const { return !raster && zones.empty(); }
 };
 
 struct FlowConfig {
@@ -80,6 +103,7 @@ struct FlowConfig {
   double viscosity = 1e-6;        // nu [m^2/s] (M-3)
   FrictionLaw friction = FrictionLaw::none;
   double friction_coefficient = 0.0;  // n [s m^-1/3] (manning), C [m^1/2/s] (chezy), K (strickler)
+  FrictionMapConfig friction_map;     // where the coefficient differs from the one above
   TurbulenceModel turbulence = TurbulenceModel::none;
   double smagorinsky_constant = 0.2;  // C_s [-]
   double latitude_deg = 0.0;          // phi [deg]; Coriolis on when coriolis == true

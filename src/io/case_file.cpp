@@ -99,8 +99,7 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder,
   }
   if (kind == "file") {
     const YamlValue file = m.get("file");
-    std::filesystem::path path = file.text();
-    if (path.is_relative()) path = (case_folder / path).lexically_normal();
+    const std::filesystem::path path = case_path(file.text(), case_folder);
     if (!std::filesystem::is_regular_file(path)) {
       file.fail(
           fmt::format("no such mesh file '{}' (a relative path is read from the case "
@@ -157,11 +156,10 @@ BedConfig read_bed(const YamlMap& m, const std::filesystem::path& case_folder) {
   if (const auto raster = m.find("raster")) {
     const std::string why = "the bed is given by raster";
     for (const char* key : {"profile_x", "level", "slope"}) m.forbid(key, why);
-    std::filesystem::path path = raster->text();
-    if (path.is_relative()) path = (case_folder / path).lexically_normal();
     bed.kind = BedConfig::Kind::raster;
     bed.origin = raster->origin();
-    bed.raster = std::make_shared<const Raster>(Raster::read(path.string(), bed.origin));
+    bed.raster = std::make_shared<const Raster>(
+        Raster::read(case_path(raster->text(), case_folder).string(), bed.origin));
     if (const auto edit = m.find("expression")) bed.expression = edit->expression(true);
     return bed;
   }
@@ -300,21 +298,17 @@ std::string read_name(const YamlMap& root, const std::string& file_name) {
   return name;
 }
 
-/// The case's coordinate system: the key crs, else the terrain raster's, else the region's
-/// vector files'; two of them that differ is an error naming the key and the files.
-std::string case_coordinate_system(const Case& c, const std::string& region_crs,
-                                   const YamlMap& root) {
-  const std::string raster_crs = c.bed.raster ? c.bed.raster->grid().crs_wkt : "";
+/// The case's coordinate system: the key crs, else that of the first geodata file that has one
+/// (the terrain raster, mesh.region's outline, the friction raster and zones, the rain raster);
+/// two of them that differ is an error naming the key and the files.
+std::string case_coordinate_system(const std::vector<GeodataCrs>& geodata, const YamlMap& root) {
   std::string crs;
   std::string from;  // where crs came from, for messages
   if (const auto given = root.find("crs")) {
     crs = coordinate_system_wkt(given->text(), given->origin());
     from = "the key crs";
   }
-  for (const auto& [other, what] :
-       {std::pair{raster_crs,
-                  fmt::format("the terrain raster '{}'", c.bed.raster ? c.bed.raster->path() : "")},
-        std::pair{region_crs, std::string("mesh.region's outline")}}) {
+  for (const auto& [other, what] : geodata) {
     if (other.empty()) continue;
     if (crs.empty()) {
       crs = other, from = what;
@@ -342,11 +336,17 @@ Case parse_case(const std::string& text, const std::string& file_name) {
   c.bed = read_bed(root.map("bed"), case_folder);
   if (c.mesh.kind == MeshSource::Kind::region)
     read_steep_refinement(root.get("mesh").map(), c.bed, c.mesh.region);
-  c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map());
+  std::vector<GeodataCrs> geodata;
+  if (c.bed.raster)
+    geodata.push_back({c.bed.raster->grid().crs_wkt,
+                       fmt::format("the terrain raster '{}'", c.bed.raster->path())});
+  geodata.push_back({region_crs, "mesh.region's outline"});
+  c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map(),
+                     case_folder, geodata);
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
   c.output = read_output(root.map("output"));
-  c.crs_wkt = case_coordinate_system(c, region_crs, root);
+  c.crs_wkt = case_coordinate_system(geodata, root);
   if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)
     root.map("output").get("rasters").fail(
         "the flood envelopes and their rasters come from the finite-volume engine; set "

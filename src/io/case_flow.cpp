@@ -21,22 +21,6 @@ double read_viscosity(const YamlMap& m, double fallback) {
   return U * L / number;  // spec 1.2
 }
 
-void read_friction(const YamlMap& m, FlowConfig& flow) {
-  const auto law = m.get("law").choice<FrictionLaw>({{"none", FrictionLaw::none},
-                                                     {"manning", FrictionLaw::manning},
-                                                     {"chezy", FrictionLaw::chezy},
-                                                     {"strickler", FrictionLaw::strickler}});
-  flow.friction = law;
-  if (law == FrictionLaw::none) {
-    m.forbid("coefficient", "not used with law 'none'");
-    return;
-  }
-  const char* unit = law == FrictionLaw::manning ? "Manning's n [s m^-1/3]"
-                     : law == FrictionLaw::chezy ? "Chezy's C [m^1/2 s^-1]"
-                                                 : "Strickler's K [m^1/3 s^-1]";
-  flow.friction_coefficient = m.get("coefficient", unit).number(Range::positive());
-}
-
 void read_turbulence(const YamlMap& m, FlowConfig& flow) {
   flow.turbulence =
       m.get("model").choice<TurbulenceModel>({{"none", TurbulenceModel::none},
@@ -62,9 +46,11 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
   return fv;
 }
 
-// Rain: an intensity i [mm/h] (a number or a hyetograph [[t, i], ...]) and an optional
-// infiltration f [mm/h], both >= 0.
-RainConfig read_rain(const YamlValue& value) {
+// Rain: an intensity i [mm/h] (a number or a hyetograph [[t, i], ...]), an optional raster of
+// weights multiplying it, and an optional infiltration f [mm/h], both >= 0. The raster's values
+// are checked under the cells when the run starts (flow/fv/rain_source.hpp).
+RainConfig read_rain(const YamlValue& value, const std::filesystem::path& case_folder,
+                     std::vector<GeodataCrs>& geodata) {
   const YamlMap m = value.map();
   RainConfig rain;
   rain.enabled = true;
@@ -72,6 +58,14 @@ RainConfig read_rain(const YamlValue& value) {
   rain.intensity = m.get("intensity", "i [mm/h], a number or a hyetograph [[t, i], ...]")
                        .series("t", Range::non_negative());
   rain.infiltration = m.number("infiltration", rain.infiltration, Range::non_negative());
+  if (const auto raster = m.find("raster")) {
+    rain.raster_origin = raster->origin();
+    rain.raster = std::make_shared<const Raster>(
+        Raster::read(case_path(raster->text(), case_folder).string(), rain.raster_origin));
+    if (!rain.raster->grid().crs_wkt.empty())
+      geodata.push_back(
+          {rain.raster->grid().crs_wkt, fmt::format("the rain raster '{}'", rain.raster->path())});
+  }
   return rain;
 }
 
@@ -146,7 +140,8 @@ BoundaryCondition read_boundary(const std::string& group, const YamlValue& value
 
 }  // namespace
 
-FlowConfig read_flow(const YamlMap& m) {
+FlowConfig read_flow(const YamlMap& m, const std::filesystem::path& case_folder,
+                     std::vector<GeodataCrs>& geodata) {
   FlowConfig flow;
   if (const auto engine = m.find("engine"))
     flow.engine =
@@ -158,7 +153,7 @@ FlowConfig read_flow(const YamlMap& m) {
   flow.gravity = m.number("gravity", flow.gravity, Range::positive());
   flow.water_density = m.number("density", flow.water_density, Range::positive());
   flow.viscosity = read_viscosity(m, flow.viscosity);
-  if (m.has("friction")) read_friction(m.get("friction").map(), flow);
+  if (m.has("friction")) read_friction(m.get("friction").map(), case_folder, flow, geodata);
   if (m.has("turbulence")) read_turbulence(m.get("turbulence").map(), flow);
   if (m.has("coriolis")) {
     flow.coriolis = true;
@@ -168,7 +163,7 @@ FlowConfig read_flow(const YamlMap& m) {
                             .number(Range::between(-90.0, 90.0));
   }
   if (m.has("wind")) flow.wind = m.get("wind").map().get("velocity", "W [m/s] as [x, y]").vec2();
-  if (m.has("rain")) flow.rain = read_rain(m.get("rain"));
+  if (m.has("rain")) flow.rain = read_rain(m.get("rain"), case_folder, geodata);
   flow.min_depth = m.number("min_depth", flow.min_depth, Range::positive());
   flow.dry_depth = m.number("dry_depth", flow.dry_depth, Range::positive());
   read_initial(m.get("initial", "the initial water surface").map(), flow);

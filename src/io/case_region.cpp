@@ -11,21 +11,14 @@ namespace flotsam {
 
 namespace {
 
-/// A vector layer given as a path, or as {file, layer} (and `field` for the name attribute).
+/// A vector layer given as a path, or as {file, layer} (and `name_field` for the lines' name
+/// attribute, `label_field` unless given).
 VectorLayer read_layer(const YamlValue& value, const std::filesystem::path& case_folder,
                        const std::string& label_field = "") {
-  std::string file, layer, label = label_field;
-  if (value.is_map()) {
-    const YamlMap m = value.map();
-    file = m.get("file", "the vector file (GeoPackage, Shapefile, GeoJSON)").text();
-    layer = m.text("layer", "");
-    if (!label_field.empty()) label = m.text("name_field", label_field);
-  } else {
-    file = value.text();
-  }
-  std::filesystem::path path = file;
-  if (path.is_relative()) path = (case_folder / path).lexically_normal();
-  return read_vector_layer(path.string(), layer, value.origin(), "", label);
+  const std::string label = value.is_map() && !label_field.empty()
+                                ? value.map().text("name_field", label_field)
+                                : label_field;
+  return read_case_layer(value, case_folder, "", label);
 }
 
 std::vector<Vec2> read_points(const YamlValue& value) {

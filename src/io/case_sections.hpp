@@ -3,15 +3,41 @@
 // takes its section as a checked map and returns the configuration of io/case.hpp.
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "geo/vector_layer.hpp"
 #include "io/case.hpp"
 #include "io/yaml_reader.hpp"
 
 namespace flotsam {
 
+/// A coordinate system met in one of the case's geodata files, and what it belongs to ("the
+/// terrain raster 'dem.tif'"): all must agree (case_file.cpp).
+struct GeodataCrs {
+  std::string wkt;
+  std::string what;
+};
+
+/// `file` as given in the case: read from the case file's folder when relative.
+std::filesystem::path case_path(const std::string& file, const std::filesystem::path& case_folder);
+
+/// A vector layer given as a path or as {file, layer} (the map's other keys are the caller's),
+/// with the numeric attribute `value_field` per polygon and the text `label_field` per line when
+/// not empty (geo/vector_layer.hpp).
+VectorLayer read_case_layer(const YamlValue& value, const std::filesystem::path& case_folder,
+                            const std::string& value_field = "",
+                            const std::string& label_field = "");
+
 /// flow: engine (and the finite-volume options), water, viscosity (M-3), friction and other sources
-/// (M-2), initial state (numbers or formulas), boundaries.
-FlowConfig read_flow(const YamlMap& flow);
+/// (M-2), initial state (numbers or formulas), boundaries. Files (a roughness raster and zones,
+/// a rain raster) are read relative to `case_folder`; their coordinate systems are added to
+/// `geodata`.
+FlowConfig read_flow(const YamlMap& flow, const std::filesystem::path& case_folder,
+                     std::vector<GeodataCrs>& geodata);
+
+/// flow.friction: the law, its default coefficient, and where it differs (a raster, zones).
+void read_friction(const YamlMap& friction, const std::filesystem::path& case_folder,
+                   FlowConfig& flow, std::vector<GeodataCrs>& geodata);
 
 /// mesh.region: outline, boundary lines, buildings, piers (files read relative to `case_folder`),
 /// sizes; `crs_wkt` receives the outline file's coordinate system (unchanged for points).

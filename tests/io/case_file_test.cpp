@@ -659,8 +659,31 @@ TEST(CaseFileError, RainIsChecked) {
             "case.yaml:6: flow.rain.intensity: expected a number >= 0 or a table [[t, value], "
             "...], got a map");
   EXPECT_EQ(error_of(rain("{intensity: 10, duration: 60}")),
-            "case.yaml:6: flow.rain.duration: unknown key; allowed here: intensity, infiltration");
+            "case.yaml:6: flow.rain.duration: unknown key; allowed here: intensity, infiltration, "
+            "raster");
   EXPECT_EQ(error_of(rain("20")), "case.yaml:6: flow.rain: expected a map of keys, got '20'");
+}
+
+TEST(CaseFile, RainRasterIsReadFromTheCaseFolder) {
+  const auto folder = test::scratch_path("flotsam_case_rain_raster");
+  std::filesystem::create_directories(folder);
+  const RasterGrid g = RasterGrid::covering({0, 0}, {100, 20}, 10.0, "");
+  write_geotiff((folder / "rain.tif").string(), g,
+                std::vector<double>(static_cast<std::size_t>(g.columns) * g.rows, 1.5));
+  const std::string file = (folder / "case.yaml").string();
+  const Case c = parse_case(
+      edited("  initial:", "  engine: fv\n  rain: {intensity: 25, raster: rain.tif}\n  initial:"),
+      file);
+  ASSERT_TRUE(c.flow.rain.raster);
+  EXPECT_EQ(c.flow.rain.raster->path(), (folder / "rain.tif").string());
+  EXPECT_EQ(c.flow.rain.raster_origin, file + ":6: flow.rain.raster");
+  EXPECT_EQ(c.flow.rain.raster->at(0, 0), 1.5);
+  EXPECT_FALSE(
+      parse_case(edited("  initial:", "  engine: fv\n  rain: {intensity: 25}\n  initial:"), file)
+          .flow.rain.raster);
+  EXPECT_EQ(error_of(edited("  initial:",
+                            "  engine: fv\n  rain: {intensity: 25, raster: none.tif}\n  initial:")),
+            "case.yaml:6: flow.rain.raster: the raster 'none.tif' does not exist");
 }
 
 TEST(CaseFileError, ProbesAreChecked) {

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.hpp"
+#include "flow/friction_map.hpp"
 #include "io/binary_archive.hpp"
 #include "io/vtu_writer.hpp"
 
@@ -65,6 +66,9 @@ void FemEngine::write_fields(const std::string& path, double t) const {
   fields.add_point_scalar("|u| [m/s]", speed);
   fields.add_point_scalar("vorticity [1/s]", vorticity);
   fields.add_cell_scalar("nu_t [m^2/s]", solver_.eddy_viscosity());
+  const FlowConfig& flow = solver_.flow_case().flow;
+  if (!flow.friction_map.empty() && !solver_.friction_coefficients().empty())
+    fields.add_cell_scalar(friction_field_name(flow.friction), solver_.friction_coefficients());
   write_vtu(path, mesh, fields, t);
 }
 

@@ -8,6 +8,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "flow/fem/turbulence.hpp"
+#include "flow/friction_map.hpp"
 
 namespace flotsam {
 
@@ -27,6 +28,21 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
         "{}: flow.rain: rain is supported by 'engine: fv' only; the FEM engine (engine: fem) "
         "has no rain or infiltration source",
         at);
+  }
+  if (flow_case.flow.friction != FrictionLaw::none) {  // (M-19) at each element's centroid
+    std::vector<Vec2> centroids(mesh.element_count());
+    for (int e = 0; e < mesh.element_count(); ++e) {
+      const auto& el = mesh.elements[e];
+      centroids[e] = (mesh.nodes[el[0]] + mesh.nodes[el[1]] + mesh.nodes[el[2]]) / 3.0;
+    }
+    FrictionCoefficients k =
+        flotsam::friction_coefficients(flow_case.flow, centroids, [&mesh](int e) {
+          return fmt::format("element {}", static_cast<std::size_t>(e) < mesh.element_tags.size()
+                                               ? mesh.element_tags[e]
+                                               : static_cast<long>(e));
+        });
+    log_friction_map(flow_case.flow.friction_map, k, "elements");
+    friction_coefficient_ = std::move(k.coefficient);
   }
 }
 
@@ -235,6 +251,8 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
   const AssemblyParameters p = assembly_parameters(it);
   system_.set_zero();
   for_each_element([&](int e) {
+    AssemblyParameters p_e = p;  // with the element's own friction coefficient
+    if (!friction_coefficient_.empty()) p_e.friction.coefficient = friction_coefficient_[e];
     ElementValues ev;
     compute_element_values(mesh_, e, ev, !it.characteristics);
     ElementState s = element_state(e, it);
@@ -255,13 +273,13 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
       avg.grad_u /= A;
       avg.H /= A;
       avg.area = A;
-      nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p.friction,
+      nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p_e.friction,
                                          avg);  // (M-3)
     }
     s.nu_e = flow.viscosity + it.added_viscosity + nu_t_[e];  // (M-3)
     LocalMatrix K;
     LocalVector F;
-    assemble_element(p, ev, s, K, F);
+    assemble_element(p_e, ev, s, K, F);
     system_.add(e, system_.element_rows(mesh_, e), K, F);
   });
 

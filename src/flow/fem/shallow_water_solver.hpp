@@ -121,6 +121,9 @@ class ShallowWaterSolver {
   std::vector<double> depth() const;                                   // H [m] P2
   std::vector<double> vorticity() const;                               // dv/dx - du/dy [1/s] P2
   const std::vector<double>& eddy_viscosity() const { return nu_t_; }  // nu_t [m^2/s] per element
+  /// The friction law's coefficient (n, C or K) per element, at the centroid of its corners: the
+  /// case's default, its raster, its zones (flow/friction_map.hpp); empty without friction.
+  const std::vector<double>& friction_coefficients() const { return friction_coefficient_; }
   const WaterBalance& water_balance() const { return balance_; }
   /// Puts back the balance of a checkpoint (a restarted run continues its sums).
   void restore_water_balance(const WaterBalance& balance) { balance_ = balance; }
@@ -177,9 +180,10 @@ class ShallowWaterSolver {
   // [m/s] per P2 node: the time term's start u_d with characteristics (departure_values)
   std::vector<double> u_departure_, v_departure_;
 
-  std::vector<double> z_b_;        // [m] per P2 node
-  std::vector<double> nu_t_;       // [m^2/s] per element
-  std::vector<double> lumped_p1_;  // [m^2] integral of each P1 basis function
+  std::vector<double> z_b_;                   // [m] per P2 node
+  std::vector<double> nu_t_;                  // [m^2/s] per element
+  std::vector<double> friction_coefficient_;  // n, C or K per element (the law's unit)
+  std::vector<double> lumped_p1_;             // [m^2] integral of each P1 basis function
   std::vector<Vec2> element_forces_, node_forces_;
   std::vector<double> open_flux_;     // [m^3/s] term (10) per mesh group, last assembly
   std::vector<int> elevation_group_;  // per elevation node: its mesh group

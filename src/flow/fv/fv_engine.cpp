@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "flow/bed.hpp"
+#include "flow/friction_map.hpp"
 #include "io/binary_archive.hpp"
 #include "io/vtu_writer.hpp"
 
@@ -138,6 +139,10 @@ void FvEngine::write_fields(const std::string& path, double t) const {
   fields.add_cell_scalar("|u| [m/s]", speed);
   fields.add_cell_scalar("Froude [-]", froude);
   fields.add_cell_scalar("z_b [m]", solver_.bed());
+  if (!case_.flow.friction_map.empty() && !solver_.friction_coefficients().empty())
+    fields.add_cell_scalar(friction_field_name(case_.flow.friction),
+                           solver_.friction_coefficients());
+  if (case_.flow.rain.raster) fields.add_cell_scalar("rain weight [-]", solver_.rain().weights());
   fields.add_cell_scalar("max H [m]", envelope_.max_depth);
   fields.add_cell_scalar("max |u| [m/s]", envelope_.max_speed);
   fields.add_cell_scalar("max H|u| [m^2/s]", envelope_.max_unit_discharge);

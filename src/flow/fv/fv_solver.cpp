@@ -7,6 +7,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "flow/bed.hpp"
+#include "flow/friction_map.hpp"
 #include "flow/fv/hllc_flux.hpp"
 
 namespace flotsam {
@@ -57,6 +58,12 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case)
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
+  if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
+    FrictionCoefficients k = flotsam::friction_coefficients(
+        flow, cells_.centroid, [](int i) { return fmt::format("cell {}", i); });
+    log_friction_map(flow.friction_map, k, "cells");
+    friction_coefficient_ = std::move(k.coefficient);
+  }
 }
 
 void FiniteVolumeSolver::initialize() {
@@ -257,7 +264,8 @@ void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
 // (M-14) friction, backward Euler in the velocity: u^{n+1} = u* - dt c_f |u^{n+1}| u^{n+1} / H,
 // with c_f and H at the sub-step's depth. u^{n+1} is parallel to u*, and its speed s solves
 //   s (1 + b s) = |u*|,  b = dt c_f / H   =>   s = 2 |u*| / (1 + sqrt(1 + 4 b |u*|)),
-// so (hu)^{n+1} = (hu)* 2 / (1 + sqrt(1 + 4 dt gamma)), gamma = c_f |u*| / H = rate (friction.hpp).
+// so (hu)^{n+1} = (hu)* 2 / (1 + sqrt(1 + 4 dt gamma)), gamma = c_f |u*| / H = rate (friction.hpp)
+// with the cell's own coefficient (M-19).
 // The factor is in (0, 1]: the flow slows, never turns round; and a flow in which the stages'
 // drive balances friction (uniform flow, a film under rain on a slope) is its fixed point
 // whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
@@ -270,7 +278,8 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
     if (h <= 0.0) continue;
     const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
     const double speed = std::sqrt(u * u + v * v);
-    const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * friction_.rate(speed, h)));
+    const double gamma = friction_.rate(speed, h, friction_coefficient_[i]);  // [1/s]
+    const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * gamma));
     U.hu[i] *= factor;
     U.hv[i] *= factor;
   }

@@ -76,6 +76,9 @@ class FiniteVolumeSolver {
   void fill_field(CellField& field) const;
 
   const CellMesh& cells() const { return cells_; }
+  /// The friction law's coefficient (n, C or K) per cell, at its centroid: the case's default,
+  /// its raster, its zones (flow/friction_map.hpp); empty without friction.
+  const std::vector<double>& friction_coefficients() const { return friction_coefficient_; }
   const std::vector<double>& bed() const { return z_; }              // [m] per cell
   const std::vector<double>& node_bed() const { return node_bed_; }  // [m] per mesh node
   double volume() const;                                             // [m^3]
@@ -109,6 +112,7 @@ class FiniteVolumeSolver {
   CellMesh cells_;
   FvBoundaries boundaries_;
   FrictionModel friction_;
+  std::vector<double> friction_coefficient_;  // n, C or K per cell (the law's unit)
   std::function<void(double, double)> sub_step_observer_;
   double g_;               // [m s^-2]
   double dry_depth_;       // [m]

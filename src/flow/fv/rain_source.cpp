@@ -1,11 +1,14 @@
 #include "flow/fv/rain_source.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <utility>
 
 #include "core/constants.hpp"
+#include "core/error.hpp"
 
 namespace flotsam {
 
@@ -18,6 +21,35 @@ TimeSeries in_metres_per_second(const TimeSeries& mm_per_hour) {
   return TimeSeries(std::move(points));
 }
 
+// The weight w_i of each cell: the value of the raster's pixel under its centroid (nearest
+// pixel). A cell outside the raster or over nodata is an InputError naming the cell and its
+// position, as is a weight < 0: a gap in the rain data is not taken for a place without rain.
+std::vector<double> weights_from_raster(const RainConfig& rain, const CellMesh& cells) {
+  const Raster& raster = *rain.raster;
+  std::vector<double> w(cells.cell_count);
+  for (int i = 0; i < cells.cell_count; ++i) {
+    const Vec2& p = cells.centroid[i];
+    const auto value = raster.nearest(p);
+    const auto pixel = raster.pixel_of(p);
+    if (value && *value >= 0.0 && std::isfinite(*value)) {
+      w[i] = *value;
+      continue;
+    }
+    const std::string what =
+        !pixel  ? std::string("it lies outside the raster's extent")
+        : value ? fmt::format(
+                      "its pixel (column {}, row {}) holds {}; a weight must be finite and >= 0",
+                      pixel->first, pixel->second, *value)
+                : fmt::format("its pixel (column {}, row {}) holds nodata", pixel->first,
+                              pixel->second);
+    throw_input_error(
+        "{}: the rain raster '{}' gives no weight to cell {} at ({:.3f}, {:.3f}) m: {}; the "
+        "raster must cover every cell with a weight >= 0 (0: no rain)",
+        rain.raster_origin, raster.path(), i, p.x(), p.y(), what);
+  }
+  return w;
+}
+
 }  // namespace
 
 RainSource::RainSource(const RainConfig& rain, const CellMesh& cells)
@@ -25,7 +57,8 @@ RainSource::RainSource(const RainConfig& rain, const CellMesh& cells)
       intensity_(in_metres_per_second(rain.intensity)),
       f_(rain.enabled ? rain.infiltration * millimetres_per_hour : 0.0),
       area_(cells.area) {
-  set_weights(std::vector<double>(cells.cell_count, 1.0));
+  set_weights(rain.enabled && rain.raster ? weights_from_raster(rain, cells)
+                                          : std::vector<double>(cells.cell_count, 1.0));
 }
 
 void RainSource::set_weights(std::vector<double> weights) {

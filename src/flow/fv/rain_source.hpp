@@ -5,9 +5,9 @@
 //   dh_i/dt = w_i r(t) - f,  and never below h_i = 0 (f takes at most what the cell holds)
 //
 // with r(t) the case's intensity (a constant or a hyetograph, piecewise linear in t), w_i a
-// weight per cell (1 everywhere unless set: the hook for rain that varies over the domain, a
-// raster multiplying the intensity cell by cell) and f the constant infiltration. The solver adds
-// the rain inside its Runge-Kutta stages and takes the infiltration after them (fv_solver.cpp).
+// weight per cell (the case's rain raster's pixel under the cell's centroid, else 1; or set) and
+// f the constant infiltration. The solver adds the rain inside its Runge-Kutta stages and takes
+// the infiltration after them (fv_solver.cpp).
 #include <vector>
 
 #include "core/time_series.hpp"
@@ -18,7 +18,9 @@ namespace flotsam {
 
 class RainSource {
  public:
-  /// The case's rain on the cells (none when `rain.enabled` is false), every weight 1.
+  /// The case's rain on the cells (none when `rain.enabled` is false), with the weights of its
+  /// raster (nearest pixel to each centroid), or every weight 1. InputError naming the cell and
+  /// its position where the raster has no value (outside it, nodata) or one < 0.
   RainSource(const RainConfig& rain, const CellMesh& cells);
 
   bool raining() const { return enabled_; }

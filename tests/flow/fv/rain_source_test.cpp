@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "core/error.hpp"
 #include "flow/fv/fv_solver.hpp"
 #include "flow/fv/rain_source.hpp"
 #include "fv_test_cases.hpp"
@@ -63,6 +64,58 @@ TEST(RainSource, WeightsScaleTheWeightedArea) {
   EXPECT_NEAR(source.weighted_area(), 40.0, 1e-12);
   EXPECT_EQ(source.weighted_area(), expected);
   EXPECT_EQ(source.weights(), w);
+}
+
+// A raster of 5 m pixels over [0, 10] x [0, 4] m (2 x 1, values `left` and `right`).
+std::shared_ptr<const Raster> two_pixel_raster(double left, double right, double y0 = 0.0) {
+  RasterGrid g;
+  g.columns = 2;
+  g.rows = 1;
+  g.transform = {0.0, 5.0, 0.0, y0 + 4.0, 0.0, -4.0};
+  return std::make_shared<const Raster>(g, std::vector{left, right}, -9999.0);
+}
+
+TEST(RainSource, WeightsAreTheRasterPixelUnderEachCentroid) {
+  const Mesh mesh = basin_mesh();
+  const CellMesh cells = build_cell_mesh(mesh, FvCells::elements);
+  RainConfig r = rain(TimeSeries(10.0));
+  r.raster = two_pixel_raster(0.5, 2.0);
+  const RainSource source(r, cells);
+  for (int i = 0; i < cells.cell_count; ++i)  // exact: the weights are the pixels' values
+    EXPECT_EQ(source.weights()[i], cells.centroid[i].x() < 5.0 ? 0.5 : 2.0) << "cell " << i;
+  EXPECT_NEAR(source.weighted_area(), 20.0 * 0.5 + 20.0 * 2.0, 1e-12);
+}
+
+TEST(RainSource, RasterMustGiveEveryCellAWeight) {
+  const Mesh mesh = basin_mesh();
+  const CellMesh cells = build_cell_mesh(mesh, FvCells::elements);
+  const auto error_of = [&](std::shared_ptr<const Raster> raster) {
+    RainConfig r = rain(TimeSeries(10.0));
+    r.raster = std::move(raster);
+    r.raster_origin = "storm.yaml:7: flow.rain.raster";
+    try {
+      RainSource source(r, cells);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // Cell 0 lies in the square [0, 1] x [0, 1] m, its centroid below y = 0.9 m.
+  const Vec2 p = cells.centroid[0];
+  const std::string at = fmt::format("cell 0 at ({:.3f}, {:.3f}) m: ", p.x(), p.y());
+  EXPECT_EQ(error_of(two_pixel_raster(-9999.0, 1.0)),
+            "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + at +
+                "its pixel (column 0, row 0) holds nodata; the raster must cover every cell with "
+                "a weight >= 0 (0: no rain)");
+  EXPECT_EQ(error_of(two_pixel_raster(-0.5, 1.0)),
+            "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + at +
+                "its pixel (column 0, row 0) holds -0.5; a weight must be finite and >= 0; the "
+                "raster must cover every cell with a weight >= 0 (0: no rain)");
+  EXPECT_EQ(error_of(two_pixel_raster(1.0, 1.0, 0.9)),  // it starts at y = 0.9 m
+            "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + at +
+                "it lies outside the raster's extent; the raster must cover every cell with a "
+                "weight >= 0 (0: no rain)");
+  EXPECT_EQ(error_of(two_pixel_raster(0.0, 1.0)), "no error");  // 0: no rain there
 }
 
 TEST(RainSource, InfiltrationTakesAtMostWhatACellHolds) {
