@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -80,16 +81,31 @@ void write_current_model(const std::string& msh_path, const MshFormat& format) {
     throw_input_error("{}: the mesh file could not be written (does its folder exist?)", msh_path);
 }
 
+Vec2 local_origin(const std::vector<Vec2>& points) {
+  constexpr double step = 1e4;  // [m]
+  Vec2 lo = points.empty() ? Vec2::Zero() : points.front();
+  for (const Vec2& p : points) lo = lo.cwiseMin(p);
+  return {step * std::trunc(lo.x() / step), step * std::trunc(lo.y() / step)};
+}
+
 /// Steps 2-4 after the boundary is built: surface, groups, mesh, write, extract.
 RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
                            const BoundaryGroups& groups, const std::string& msh_path,
-                           const MshFormat& format) {
+                           const MshFormat& format, const Vec2& origin) {
   try {
     const int surface = geo::addPlaneSurface(loops);
     geo::synchronize();
     groups.create(surface);
     gmsh::model::mesh::generate(2);
     gmsh::model::mesh::setOrder(2);
+    if (origin != Vec2::Zero()) {  // back to the caller's coordinates
+      std::vector<std::size_t> tags;
+      std::vector<double> xyz, uvw;
+      gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
+      for (std::size_t k = 0; k < tags.size(); ++k)
+        gmsh::model::mesh::setNode(
+            tags[k], {xyz[3 * k] + origin.x(), xyz[3 * k + 1] + origin.y(), xyz[3 * k + 2]}, {});
+    }
   } catch (...) {
     throw_input_error("{}: Gmsh cannot mesh the geometry: {}", source, current_gmsh_error());
   }

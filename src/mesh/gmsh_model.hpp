@@ -43,10 +43,17 @@ int add_distance_size_field(const std::vector<int>& curves, double size_near, do
 /// Writes the current model's mesh to `msh_path` (InputError naming it when it cannot).
 void write_current_model(const std::string& msh_path, const MshFormat& format);
 
-/// Surface from the curve loops (outer first), groups, mesh, order 2, write, extract.
+/// A local origin for geometry given in map coordinates: the corner of the points' bounding box
+/// truncated towards zero to a multiple of 10 km, (0, 0) within 10 km of the origin. Gmsh
+/// integrates element sizes along curves with finite differences of the coordinates; around
+/// UTM coordinates (5e5, 5e6 m) their round-off keeps that integration from converging (minutes
+/// for one curve), so the generators build the model at `p - origin` and move the nodes back.
+Vec2 local_origin(const std::vector<Vec2>& points);
+/// Surface from the curve loops (outer first), groups, mesh, order 2, nodes moved by `origin`
+/// (the model was built around it: local_origin), write, extract.
 RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
                            const BoundaryGroups& groups, const std::string& msh_path,
-                           const MshFormat& format);
+                           const MshFormat& format, const Vec2& origin = Vec2::Zero());
 
 void require_positive(const std::string& source, const char* key, double value);
 

@@ -163,14 +163,15 @@ RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string&
   check_polygon(polygon, source);
   GmshSession session;
   set_common_options(polygon.mesh_size);
+  const Vec2 origin = local_origin(polygon.points);
   std::vector<int> points, sides;
-  for (const Vec2& p : polygon.points) points.push_back(add_point(p));
+  for (const Vec2& p : polygon.points) points.push_back(add_point(p - origin));
   BoundaryGroups groups;
   for (std::size_t i = 0; i < points.size(); ++i) {
     sides.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
     groups.add(polygon.groups[i], sides.back());
   }
-  return mesh_current_model(source, {geo::addCurveLoop(sides)}, groups, msh_path, format);
+  return mesh_current_model(source, {geo::addCurveLoop(sides)}, groups, msh_path, format, origin);
 }
 
 Mesh generate_mesh(const MeshSource& source, const std::string& msh_path, const MshFormat& format) {

@@ -6,9 +6,11 @@
 //      errors name the features (file, layer, feature id) and what is wrong;
 //   3. boundary lines: their ends are inserted into the outline where they fall on a side, and
 //      every side lying along a line takes its group, the others default_group;
-//   4. the outline and its holes as curve loops; sizes: Threshold fields of the distance to the
+//   4. the outline and its holes as curve loops, built around a local origin (local_origin: map
+//      coordinates far from 0 stall Gmsh); sizes: Threshold fields of the distance to the
 //      buildings and to the piers, their minimum, and size_at (steep terrain) through Gmsh's
-//      size callback; then the common mesh, order 2, write, extract (gmsh_model.hpp).
+//      size callback; then the common mesh, order 2, nodes moved back, write, extract
+//      (gmsh_model.hpp).
 #include <gmsh.h>
 #include <spdlog/spdlog.h>
 
@@ -140,10 +142,10 @@ std::vector<std::string> side_groups(std::vector<Vec2>& outline, const RegionGeo
   return groups;
 }
 
-int add_loop(const std::vector<Vec2>& ring, const std::string& group, BoundaryGroups& groups,
-             std::vector<int>* curves) {
+int add_loop(const std::vector<Vec2>& ring, const Vec2& origin, const std::string& group,
+             BoundaryGroups& groups, std::vector<int>* curves) {
   std::vector<int> points, sides;
-  for (const Vec2& p : ring) points.push_back(add_point(p));
+  for (const Vec2& p : ring) points.push_back(add_point(p - origin));
   for (std::size_t i = 0; i < points.size(); ++i) {
     sides.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
     groups.add(group, sides.back());
@@ -205,9 +207,10 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
 
   GmshSession session;
   set_common_options(g.mesh_size);
+  const Vec2 origin = local_origin(outline.points);  // the model is built at p - origin
   BoundaryGroups groups;
   std::vector<int> loops, outline_points, outline_sides;
-  for (const Vec2& p : outline.points) outline_points.push_back(add_point(p));
+  for (const Vec2& p : outline.points) outline_points.push_back(add_point(p - origin));
   for (std::size_t i = 0; i < outline_points.size(); ++i) {
     outline_sides.push_back(
         geo::addLine(outline_points[i], outline_points[(i + 1) % outline_points.size()]));
@@ -215,18 +218,18 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
   }
   loops.push_back(geo::addCurveLoop(outline_sides));
   for (const NamedRing& r : islands)
-    loops.push_back(add_loop(r.points, g.default_group, groups, nullptr));
+    loops.push_back(add_loop(r.points, origin, g.default_group, groups, nullptr));
   std::vector<int> building_curves, pier_curves;
   for (const NamedRing& r : buildings)
-    loops.push_back(add_loop(r.points, "buildings", groups, &building_curves));
+    loops.push_back(add_loop(r.points, origin, "buildings", groups, &building_curves));
   for (std::size_t k = 0; k < g.piers.size(); ++k) {
-    const auto arcs = add_circle(g.piers[k].centre, g.piers[k].radius);
+    const auto arcs = add_circle(g.piers[k].centre - origin, g.piers[k].radius);
     for (int arc : arcs) groups.add(fmt::format("pier_{}", k + 1), arc);
     pier_curves.insert(pier_curves.end(), arcs.begin(), arcs.end());
     loops.push_back(geo::addCurveLoop(arcs));
   }
   for (std::size_t k = 0; k < pier_outlines.size(); ++k)
-    loops.push_back(add_loop(pier_outlines[k].points,
+    loops.push_back(add_loop(pier_outlines[k].points, origin,
                              fmt::format("pier_{}", g.piers.size() + k + 1), groups, &pier_curves));
   geo::synchronize();
   namespace field = gmsh::model::mesh::field;
@@ -243,10 +246,10 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
     field::setAsBackgroundMesh(smallest);
   }
   if (g.size_at)
-    gmsh::model::mesh::setSizeCallback([&g](int, int, double x, double y, double) {
-      return std::min(g.size_at({x, y}), g.mesh_size);
+    gmsh::model::mesh::setSizeCallback([&g, origin](int, int, double x, double y, double) {
+      return std::min(g.size_at(origin + Vec2(x, y)), g.mesh_size);
     });
-  return mesh_current_model(source, loops, groups, msh_path, format);
+  return mesh_current_model(source, loops, groups, msh_path, format, origin);
 }
 
 }  // namespace flotsam

@@ -105,6 +105,31 @@ TEST(RegionMesh, ElementsShrinkNearBuildingsAndWhereSizeAtAsks) {
   EXPECT_LT(left / n_left, 0.25 * right / n_right);  // (2 / 6)^2 = 0.11 expected
 }
 
+TEST(RegionMesh, MapCoordinatesMeshAsNearTheOrigin) {
+  // The same reach, a pier and a steep half in UTM coordinates (EPSG:32633 around x = 500 km,
+  // y = 5100 km): Gmsh, given such coordinates, took minutes on one curve; the generator builds
+  // its model around a local origin and moves the nodes back.
+  const Vec2 offset(500000.0, 5100000.0);  // [m]
+  RegionGeometry near = town();
+  near.piers = {{{80, 30}, 1.5}};
+  near.size_at = [](const Vec2& p) { return p.x() < 50.0 ? 3.0 : 1e9; };
+  RegionGeometry far = near;
+  const auto move = [&](std::vector<Vec2>& ring) {
+    for (Vec2& p : ring) p += offset;
+  };
+  move(far.outline.points);
+  for (auto& line : far.lines) move(line.points);
+  for (auto& building : far.buildings) move(building.points);
+  far.piers[0].centre += offset;
+  far.size_at = [offset](const Vec2& p) { return p.x() - offset.x() < 50.0 ? 3.0 : 1e9; };
+  const Mesh a = build_mesh(generate_region_mesh(near)), b = build_mesh(generate_region_mesh(far));
+  ASSERT_EQ(a.element_count(), b.element_count());
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t n = 0; n < a.nodes.size(); ++n)
+    ASSERT_LT((b.nodes[n] - offset - a.nodes[n]).norm(), 1e-6) << "node " << n;
+  EXPECT_EQ(group_lengths(a).size(), group_lengths(b).size());
+}
+
 TEST(RegionMesh, BadGeometryNamesTheFeature) {
   RegionGeometry g = town();
   g.outline.points = {{0, 0}, {100, 60}, {100, 0}, {0, 60}};  // a bow tie
