@@ -11,14 +11,12 @@ double raster_elevation(const BedConfig& bed, const Vec2& p, const std::string& 
   const Raster& raster = *bed.raster;
   if (const auto z = raster.bilinear(p))
     return bed.expression.empty() ? *z : bed.expression(p.x(), p.y(), *z);
-  const Vec2 q = raster.grid().pixel_coordinates(p);
-  const bool inside =
-      q.x() >= 0 && q.x() <= raster.grid().columns && q.y() >= 0 && q.y() <= raster.grid().rows;
+  const auto pixel = raster.pixel_of(p);
   throw_input_error("{}: the terrain raster '{}' has no value at {}(x, y) = ({:.3f}, {:.3f}) m: {}",
                     bed.origin, raster.path(), where, p.x(), p.y(),
-                    inside ? fmt::format("a pixel next to it (column {}, row {}) holds nodata",
-                                         static_cast<int>(q.x()), static_cast<int>(q.y()))
-                           : "the point lies outside the raster's extent");
+                    pixel ? fmt::format("a pixel next to it (column {}, row {}) holds nodata",
+                                        pixel->first, pixel->second)
+                          : "the point lies outside the raster's extent");
 }
 
 }  // namespace

@@ -101,10 +101,13 @@ bool Raster::is_nodata(double v) const {
   return nodata_ && v == *nodata_;
 }
 
+bool RasterGrid::in_extent(const Vec2& q) const {
+  return q.x() >= 0.0 && q.x() <= columns && q.y() >= 0.0 && q.y() <= rows;
+}
+
 std::optional<double> Raster::bilinear(const Vec2& p) const {
   const Vec2 q = grid_.pixel_coordinates(p);
-  if (!(q.x() >= 0.0 && q.x() <= grid_.columns && q.y() >= 0.0 && q.y() <= grid_.rows))
-    return std::nullopt;
+  if (!grid_.in_extent(q)) return std::nullopt;
   const Axis a = axis_at(q.x(), grid_.columns), b = axis_at(q.y(), grid_.rows);
   const int c1 = std::min(a.first + 1, grid_.columns - 1),
             r1 = std::min(b.first + 1, grid_.rows - 1);
@@ -118,8 +121,7 @@ std::optional<double> Raster::bilinear(const Vec2& p) const {
 
 std::optional<std::pair<int, int>> Raster::pixel_of(const Vec2& p) const {
   const Vec2 q = grid_.pixel_coordinates(p);
-  if (!(q.x() >= 0.0 && q.x() <= grid_.columns && q.y() >= 0.0 && q.y() <= grid_.rows))
-    return std::nullopt;
+  if (!grid_.in_extent(q)) return std::nullopt;
   return std::pair{std::min(static_cast<int>(q.x()), grid_.columns - 1),
                    std::min(static_cast<int>(q.y()), grid_.rows - 1)};
 }

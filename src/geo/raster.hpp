@@ -30,6 +30,8 @@ struct RasterGrid {
   Vec2 centre(int c, int r) const;
   /// Fractional pixel coordinates (c, r) of a point: its pixel is (floor c, floor r).
   Vec2 pixel_coordinates(const Vec2& p) const;
+  /// Fractional pixel coordinates q lie in the grid's extent (its edges included).
+  bool in_extent(const Vec2& q) const;
   /// A north-up grid of square pixels of size `resolution` [m] covering [lo, hi] (corners
   /// aligned to multiples of the resolution).
   static RasterGrid covering(const Vec2& lo, const Vec2& hi, double resolution,
