@@ -14,6 +14,7 @@ void add_mesh_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+void add_ensemble_command(CLI::App& app);
 
 /// The mesh that `path` gives: a Gmsh .msh file is read; a case file (.yaml/.yml) has its mesh
 /// read or generated.

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   flotsam::cli::add_info_command(app);
   flotsam::cli::add_run_command(app);
   flotsam::cli::add_render_command(app);
+  flotsam::cli::add_ensemble_command(app);
   try {
     app.parse(argc, argv);  // runs the chosen command's callback
   } catch (const CLI::ParseError& e) {

@@ -230,6 +230,10 @@ void Simulation::run() {
     }
   }
   progress.finish();
+  write_final_output();
+}
+
+void Simulation::write_final_output() {
   if (output_ && output_->times().back() < time_)
     write_output_if_due(true);  // the final state, when the last interval was not complete
 }

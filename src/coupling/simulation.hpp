@@ -51,6 +51,9 @@ class Simulation {
   void step();
   /// initialize(), step() until the end time, then the final output.
   void run();
+  /// The final output, when the last output interval was not complete (run() ends with it; a
+  /// caller stepping the run itself calls it once done()).
+  void write_final_output();
   /// The end-of-run summary: water balance, bodies, integration and stage timings.
   std::string summary() const;
 

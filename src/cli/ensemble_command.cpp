@@ -1,0 +1,50 @@
+// flotsam ensemble CASE.yaml: run the case many times over drawn inputs (its `ensemble:`
+// section), on --jobs threads and on the ranks of `mpirun -n K`, and print the blocking
+// probabilities and the distributions (src/ensemble/ensemble_runner.hpp).
+#include <fmt/core.h>
+
+#include "cli/commands.hpp"
+#include "ensemble/ensemble_runner.hpp"
+
+namespace flotsam::cli {
+
+void add_ensemble_command(CLI::App& app) {
+  auto options = std::make_shared<EnsembleOptions>();
+  auto quiet = std::make_shared<bool>(false);
+  auto no_pictures = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand(
+      "ensemble",
+      "Run an ensemble: the case's members over drawn inputs (its `ensemble:` section), with\n"
+      "the blocking probability of each bridge and gap, backwater rise, travel distances.\n"
+      "Results go to <output.directory>/<name>/; run again on the same folder to resume.\n"
+      "On several machines: mpirun -n K flotsam ensemble CASE.yaml\n"
+      "Example: flotsam ensemble examples/bridge_blocking.yaml --jobs 2");
+  cmd->add_option("case", options->case_file, "case file (YAML) with an ensemble section")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", options->output,
+                  "output folder (default: <output.directory>/<name> from the case)");
+  cmd->add_option("--members", options->members,
+                  "members per sweep value, instead of ensemble.members")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("-j,--jobs", options->jobs, "members run at once on this machine (default 1)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--overwrite", options->overwrite,
+                "replace an earlier ensemble in the output folder instead of resuming it");
+  cmd->add_flag("-q,--quiet", *quiet, "no progress line");
+  cmd->add_flag("--no-pictures", *no_pictures, "no PNG pictures");
+  cmd->callback([options, quiet, no_pictures] {
+    options->progress = !*quiet;
+    options->pictures = !*no_pictures;
+    const RankWorld world;
+    const EnsembleReport report = run_ensemble(*options, world);
+    if (world.rank() != 0) return;
+    fmt::print("{}", report.summary);
+    fmt::print("members run      {} now, {} kept from an earlier run, on {} rank(s) x {} job(s)\n",
+               report.ran, report.kept, world.size(), options->jobs);
+    fmt::print("wall time        {:.2f} s\n", report.wall_seconds);
+    fmt::print("results in       {}\n", report.directory.string());
+  });
+}
+
+}  // namespace flotsam::cli

@@ -1,0 +1,114 @@
+#include "ensemble/blocking_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flotsam {
+
+namespace {
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<double> gap_cover(const JamStatistics& statistics, const BodySet& bodies,
+                              const JamGeometry& geometry, int bridge) {
+  // The y-intervals [y_G - h_y, y_G + h_y] of every body of every jam at the bridge, their union
+  // clipped to each gap (covered_length), over the gap's width.
+  std::vector<std::pair<double, double>> spans;
+  for (const Jam& jam : statistics.jams) {
+    if (jam.bridge != bridge) continue;
+    for (int i : jam.bodies) {
+      const double y = bodies.position[i].y(), h = footprint_half_extent(bodies, i).y();
+      spans.emplace_back(y - h, y + h);
+    }
+  }
+  std::vector<double> cover;
+  for (const Gap& gap : geometry.bridges[bridge].gaps)
+    cover.push_back(covered_length(spans, gap.y_lower, gap.y_upper) / gap.width());
+  return cover;
+}
+
+BlockingMonitor::BlockingMonitor(const JamGeometry& geometry, const BlockingCriterion& criterion)
+    : geometry_(&geometry), criterion_(criterion) {
+  bridges_.resize(geometry.bridges.size());
+  for (const BridgeLine& line : geometry.bridges) {
+    gaps_.emplace_back(line.gaps.size());
+    streak_start_.emplace_back(line.gaps.size(), nan);
+  }
+}
+
+void BlockingMonitor::note_new_bodies(const BodySet& bodies) {
+  for (int i = static_cast<int>(start_.size()); i < bodies.size(); ++i)
+    start_.push_back(bodies.position[i]);
+}
+
+void BlockingMonitor::sample(double t, const JamStatistics& statistics, const BodySet& bodies,
+                             std::span<const double> rise) {
+  for (std::size_t b = 0; b < bridges_.size(); ++b) {
+    BridgeOutcome& bridge = bridges_[b];
+    int bodies_at_bridge = 0;
+    for (const Jam& jam : statistics.jams)
+      if (jam.bridge == static_cast<int>(b)) {
+        bodies_at_bridge += jam.body_count();
+        bridge.largest_jam = std::max(bridge.largest_jam, jam.body_count());
+      }
+    bridge.max_blockage = std::max(bridge.max_blockage, statistics.bridge_blockage[b]);
+    if (b < rise.size())
+      bridge.max_rise = std::isnan(bridge.max_rise) ? rise[b] : std::max(bridge.max_rise, rise[b]);
+    const std::vector<double> cover = gap_cover(statistics, bodies, *geometry_, static_cast<int>(b));
+    for (std::size_t g = 0; g < cover.size(); ++g) {
+      GapOutcome& gap = gaps_[b][g];
+      double& streak = streak_start_[b][g];
+      gap.max_cover = std::max(gap.max_cover, cover[g]);
+      if (cover[g] < criterion_.fraction) {
+        streak = nan;
+        continue;
+      }
+      if (std::isnan(streak)) streak = t;
+      if (gap.blocked || t - streak < criterion_.duration) continue;
+      gap.blocked = true;
+      gap.blocking_time = streak;
+      if (!bridge.blocked || streak < bridge.blocking_time) {
+        if (!bridge.blocked) bridge.blocking_bodies = bodies_at_bridge;
+        bridge.blocked = true;
+        bridge.blocking_time = std::isnan(bridge.blocking_time)
+                                   ? streak
+                                   : std::min(bridge.blocking_time, streak);
+      }
+    }
+  }
+}
+
+void BlockingMonitor::finish(const JamStatistics& statistics, const BodySet& bodies,
+                             MemberResult& result) const {
+  result.bridges = bridges_;
+  result.gaps = gaps_;
+  result.released = statistics.released;
+  result.passed = statistics.passed;
+  result.left = statistics.left;
+  result.trapped = statistics.trapped;
+  result.stranded = statistics.deposited;
+  result.floating = statistics.floating;
+  std::vector<std::uint8_t> jammed(static_cast<std::size_t>(bodies.size()), 0);
+  for (const Jam& jam : statistics.jams)
+    for (int i : jam.bodies) jammed[i] = 1;
+  const double passed_x = geometry_->passed_x();
+  result.bodies.clear();
+  for (int i = 0; i < bodies.size(); ++i) {
+    BodyOutcome body;
+    body.id = bodies.id[i];
+    body.start = i < static_cast<int>(start_.size()) ? start_[i] : bodies.position[i];
+    body.end = bodies.position[i];
+    if (bodies.state[i] == BodyState::gone)
+      body.fate = BodyFate::left;
+    else if (jammed[i])
+      body.fate = BodyFate::trapped;
+    else if (bodies.state[i] == BodyState::grounded)
+      body.fate = BodyFate::stranded;
+    body.passed = !jammed[i] && (std::isinf(passed_x) ? bodies.state[i] == BodyState::gone
+                                                      : body.end.x() > passed_x);
+    result.bodies.push_back(body);
+  }
+}
+
+}  // namespace flotsam

@@ -1,0 +1,268 @@
+#include "ensemble/ensemble_runner.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "contact/boundary_segments.hpp"
+#include "core/error.hpp"
+#include "coupling/jam_statistics.hpp"
+#include "coupling/progress.hpp"
+#include "ensemble/ensemble_pictures.hpp"
+#include "ensemble/ensemble_statistics.hpp"
+#include "ensemble/member_case.hpp"
+#include "ensemble/member_runner.hpp"
+#include "io/case_file.hpp"
+#include "mesh/mesh_generator.hpp"
+
+namespace fs = std::filesystem;
+
+namespace flotsam {
+
+namespace {
+
+constexpr const char* manifest_file = "ensemble.txt";
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw_input_error("cannot open the case file '{}': {}", path,
+                      fs::exists(path) ? "not readable" : "no such file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// FNV-1a, 64 bits: the fingerprint of the case an ensemble folder holds.
+std::uint64_t fingerprint(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ULL;
+  return h;
+}
+
+bool ours(const fs::path& entry) {
+  const std::string name = entry.filename().string();
+  return name.starts_with("member_") || name.starts_with("ensemble") ||
+         name.ends_with(".png") || name == ".flotsam-output";
+}
+
+/// Creates the folder, or finds an earlier ensemble of the same case in it (resume), or empties
+/// an earlier ensemble's files (`overwrite`). Returns how the folder was found, for the log.
+std::string prepare_ensemble_directory(const fs::path& directory, const std::string& manifest,
+                                       bool overwrite) {
+  if (fs::exists(directory) && !fs::is_directory(directory))
+    throw_input_error("output folder '{}' exists and is not a folder", directory.string());
+  fs::create_directories(directory);
+  const fs::path path = directory / manifest_file;
+  bool empty = true;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory))
+    empty = empty && entry.path().filename() == ".flotsam-output";
+  if (!empty) {
+    if (!fs::exists(path))
+      throw_input_error(
+          "output folder '{}' is not empty and holds no ensemble ({} is missing); choose another "
+          "folder",
+          directory.string(), manifest_file);
+    if (read_text(path.string()) == manifest && !overwrite) return "resumed";
+    if (!overwrite)
+      throw_input_error(
+          "output folder '{}' holds an ensemble of another case or member count; add --overwrite "
+          "to replace it, or choose another folder",
+          directory.string());
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory))
+      if (ours(entry.path())) fs::remove_all(entry.path());
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << manifest;
+  if (!out) throw_input_error("cannot write in output folder '{}'", directory.string());
+  return "new";
+}
+
+/// The progress line over members: done of all, failed, elapsed and the time left at the pace
+/// of the members run so far.
+class MemberProgress {
+ public:
+  MemberProgress(int total, int kept, bool show)
+      : total_(total), done_(kept), kept_(kept), show_(show), terminal_(isatty(2) != 0) {}
+
+  void member_done(bool failed) {
+    std::lock_guard lock(mutex_);
+    ++done_;
+    failed_ += failed;
+    if (!show_) return;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const int ran = done_ - kept_;
+    const double left = ran > 0 ? wall / ran * (total_ - done_) : 0.0;
+    fmt::print(stderr, "{}members {}/{} done ({} failed)  elapsed {}  left {}{}",
+               terminal_ ? "\r" : "", done_, total_, failed_, Progress::format_duration(wall),
+               Progress::format_duration(left), terminal_ ? "\x1b[K" : "\n");
+    std::fflush(stderr);
+  }
+  void finish() const {
+    if (show_ && terminal_ && done_ > kept_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  int total_, done_, kept_, failed_ = 0;
+  bool show_, terminal_;
+  std::mutex mutex_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+struct Plan {
+  EnsembleConfig config;
+  Case base;
+  YAML::Node base_yaml;
+  Mesh mesh;
+  JamGeometry geometry;
+  MemberCaseContext context;
+  std::string manifest;
+};
+
+Plan make_plan(const EnsembleOptions& options) {
+  Plan plan;
+  const std::string text = read_text(options.case_file);
+  const SplitCaseText split = split_ensemble_text(text);
+  plan.config = parse_ensemble(split.ensemble_text, options.case_file);
+  if (options.members > 0) plan.config.members = options.members;
+  plan.base = parse_case(split.case_text, options.case_file);
+  if (plan.base.bodies.bodies.empty() && plan.base.bodies.releases.empty())
+    throw_input_error("{}: an ensemble needs bodies (bodies.list or bodies.release)",
+                      options.case_file);
+  plan.base_yaml = YAML::Load(split.case_text);
+  plan.mesh = generate_mesh(plan.base.mesh);
+  check_case_against_mesh(plan.base, plan.mesh.group_names);
+  plan.geometry = jam_geometry_for(plan.base.mesh, plan.mesh,
+                                   solid_group_indices(plan.mesh, plan.base.flow.boundaries));
+  const fs::path directory =
+      options.output.empty() ? fs::path(plan.base.output.directory) / plan.base.name
+                             : fs::path(options.output);
+  plan.context.case_folder = fs::path(options.case_file).parent_path();
+  plan.context.directory = fs::absolute(directory).lexically_normal();
+  plan.context.source = options.case_file;
+  if (!plan.geometry.bridges.empty())
+    for (const Gap& gap : plan.geometry.bridges.front().gaps)
+      plan.context.gap_width = std::max(plan.context.gap_width, gap.width());
+  // Inputs that cannot apply to this case are the ensemble's error, not a member's failure.
+  (void)member_case_text(plan.base_yaml, draw_member_inputs(plan.config, 0,
+                         static_cast<int>(plan.base.bodies.releases.size())), plan.context);
+  plan.manifest = fmt::format("flotsam ensemble 1\ncase {}\nfingerprint {:016x}\nmembers {}\n",
+                              fs::absolute(options.case_file).lexically_normal().string(),
+                              fingerprint(text), plan.config.total_members());
+  return plan;
+}
+
+/// Runs `runs` on `jobs` threads, each taking the next member not yet taken.
+std::vector<MemberResult> run_members(const std::vector<MemberRun>& runs, const MemberSetup& setup,
+                                      int jobs, MemberProgress& progress) {
+  std::vector<MemberResult> results(runs.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t k = next++; k < runs.size(); k = next++) {
+      results[k] = run_member(runs[k], setup);
+      progress.member_done(results[k].failed);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 1; t < jobs; ++t) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  return results;
+}
+
+}  // namespace
+
+EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& world) {
+  const auto start = std::chrono::steady_clock::now();
+  Plan plan = make_plan(options);
+  EnsembleReport report;
+  report.directory = plan.context.directory;
+  // Rank 0 prepares the folder; the others wait for its word (its error stops them too).
+  std::string prepared;
+  if (world.rank() == 0) {
+    try {
+      prepared = prepare_ensemble_directory(report.directory, plan.manifest, options.overwrite);
+    } catch (const InputError& e) {
+      prepared = std::string("error: ") + e.what();
+    }
+  }
+  prepared = world.broadcast(prepared);
+  if (prepared.starts_with("error: ")) throw_input_error("{}", prepared.substr(7));
+
+  const int total = plan.config.total_members();
+  const int releases = static_cast<int>(plan.base.bodies.releases.size());
+  std::vector<MemberResult> mine;  // this rank's members, kept or run now
+  std::vector<MemberRun> runs;
+  for (int m = world.rank(); m < total; m += world.size()) {
+    const fs::path folder = report.directory / member_name(m);
+    if (std::optional<MemberResult> kept = read_member_result(folder);
+        kept && kept->inputs.member == m) {
+      mine.push_back(std::move(*kept));
+      continue;
+    }
+    MemberRun run;
+    run.inputs = draw_member_inputs(plan.config, m, releases);
+    run.case_text = member_case_text(plan.base_yaml, run.inputs, plan.context);
+    run.case_path = report.directory / (member_name(m) + ".yaml");
+    run.folder = folder;
+    runs.push_back(std::move(run));
+  }
+  report.kept = static_cast<int>(mine.size());
+  report.ran = static_cast<int>(runs.size());
+  const int share = report.kept + report.ran;
+  MemberProgress progress(share, report.kept, options.progress && world.rank() == 0);
+  MemberSetup setup{&plan.mesh, &plan.geometry, plan.config.blocking,
+                    options.jobs > 1 || world.size() > 1 ? 1 : 0};
+  for (MemberResult& r : run_members(runs, setup, std::max(1, options.jobs), progress)) {
+    report.member_seconds += r.wall_seconds;
+    mine.push_back(std::move(r));
+  }
+  progress.finish();
+
+  std::string text;
+  for (const MemberResult& r : mine) text += serialize_member(r);
+  const std::vector<std::string> gathered = world.gather(text);
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (world.rank() != 0) return report;
+
+  std::vector<MemberResult> results;
+  for (const std::string& rank_text : gathered) {
+    std::istringstream in(rank_text);
+    std::string line, record;
+    while (std::getline(in, line)) {
+      record += line + "\n";
+      if (line == "end") {
+        results.push_back(parse_member(record));
+        record.clear();
+      }
+    }
+  }
+  std::sort(results.begin(), results.end(), [](const MemberResult& a, const MemberResult& b) {
+    return a.inputs.member < b.inputs.member;
+  });
+  const EnsembleStatistics statistics =
+      compute_ensemble_statistics(results, plan.config, plan.geometry);
+  report.summary = format_ensemble_summary(statistics, plan.config, plan.base.name);
+  for (const MemberResult& r : results) report.failed += r.failed;
+  const std::string directory = report.directory.string();
+  {
+    std::ofstream out(report.directory / "ensemble_summary.txt", std::ios::binary);
+    out << report.summary;
+    if (!out) throw_run_error("could not write '{}/ensemble_summary.txt'", directory);
+  }
+  write_ensemble_tables(directory, results, statistics, plan.config, plan.geometry);
+  if (options.pictures)
+    draw_ensemble_pictures(directory, results, statistics, plan.config, plan.mesh);
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace flotsam
