@@ -142,7 +142,7 @@ std::string describe_inputs(const MemberInputs& inputs) {
 
 std::string format_sample(const char* what, const SampleSummary& s, const char* unit) {
   if (s.count == 0) return fmt::format("  {:<16}none\n", what);
-  return fmt::format("  {:<16}mean {:.3f}  min {:.3f}  median {:.3f}  p90 {:.3f}  max {:.3f} {}"
+  return fmt::format("  {:<16}mean {:.4g}  min {:.4g}  median {:.4g}  p90 {:.4g}  max {:.4g} {}"
                      "  ({} values)\n",
                      what, s.mean, s.min, s.median, s.p90, s.max, unit, s.count);
 }
