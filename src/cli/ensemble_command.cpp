@@ -40,9 +40,10 @@ void add_ensemble_command(CLI::App& app) {
     const EnsembleReport report = run_ensemble(*options, world);
     if (world.rank() != 0) return;
     fmt::print("{}", report.summary);
-    fmt::print("rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
-               "job(s))\n",
-               report.ran, report.kept, world.size(), options->jobs);
+    fmt::print(
+        "rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
+        "job(s))\n",
+        report.ran, report.kept, world.size(), options->jobs);
     fmt::print("wall time        {:.2f} s\n", report.wall_seconds);
     fmt::print("results in       {}\n", report.directory.string());
   });

@@ -55,7 +55,8 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
     bridge.max_blockage = std::max(bridge.max_blockage, statistics.bridge_blockage[b]);
     if (b < rise.size())
       bridge.max_rise = std::isnan(bridge.max_rise) ? rise[b] : std::max(bridge.max_rise, rise[b]);
-    const std::vector<double> cover = gap_cover(statistics, bodies, *geometry_, static_cast<int>(b));
+    const std::vector<double> cover =
+        gap_cover(statistics, bodies, *geometry_, static_cast<int>(b));
     for (std::size_t g = 0; g < cover.size(); ++g) {
       GapOutcome& gap = gaps_[b][g];
       double& streak = streak_start_[b][g];
@@ -71,9 +72,8 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
       if (!bridge.blocked || streak < bridge.blocking_time) {
         if (!bridge.blocked) bridge.blocking_bodies = bodies_at_bridge;
         bridge.blocked = true;
-        bridge.blocking_time = std::isnan(bridge.blocking_time)
-                                   ? streak
-                                   : std::min(bridge.blocking_time, streak);
+        bridge.blocking_time =
+            std::isnan(bridge.blocking_time) ? streak : std::min(bridge.blocking_time, streak);
       }
     }
   }

@@ -44,7 +44,8 @@ EnsembleInput read_input_key(const YamlValue& where, const std::string& key) {
   const std::string near = nearest_word(key, keys);
   std::ostringstream allowed;
   for (std::size_t k = 0; k < keys.size(); ++k) allowed << (k ? ", " : "") << keys[k];
-  where.fail("unknown input '" + key + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+  where.fail("unknown input '" + key + "'" +
+             (near.empty() ? "" : " (did you mean '" + near + "'?)") +
              "; inputs that can vary: " + allowed.str());
 }
 
@@ -66,7 +67,8 @@ Distribution read_distribution(const YamlValue& value, const Range& range) {
   } else {
     const YamlMap m = value.map();
     const std::string kind = m.only_one_of({"uniform", "normal", "choice"});
-    if (kind.empty()) value.fail("expected a number, [min, max], or a map with one of uniform, normal, choice");
+    if (kind.empty())
+      value.fail("expected a number, [min, max], or a map with one of uniform, normal, choice");
     const YamlValue v = m.get(kind);
     if (kind == "uniform") {
       d.kind = Distribution::Kind::uniform;
@@ -87,8 +89,12 @@ Distribution read_distribution(const YamlValue& value, const Range& range) {
 
 }  // namespace
 
-const char* input_key(EnsembleInput input) { return name_of(input).key; }
-const char* input_unit(EnsembleInput input) { return name_of(input).unit; }
+const char* input_key(EnsembleInput input) {
+  return name_of(input).key;
+}
+const char* input_unit(EnsembleInput input) {
+  return name_of(input).unit;
+}
 
 SplitCaseText split_ensemble_text(const std::string& text) {
   // A top-level key starts at column 0 with a character other than space, '#', '-' or a document
@@ -98,8 +104,8 @@ SplitCaseText split_ensemble_text(const std::string& text) {
   std::string line;
   bool inside = false;
   while (std::getline(in, line)) {
-    const bool top_level = !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#' &&
-                           line[0] != '\r';
+    const bool top_level =
+        !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#' && line[0] != '\r';
     if (top_level) inside = line.rfind("ensemble:", 0) == 0;
     (inside ? split.ensemble_text : split.case_text) += line;
     split.ensemble_text += "\n";
@@ -136,7 +142,8 @@ EnsembleConfig parse_ensemble(const std::string& ensemble_text, const std::strin
       if (v.input == c.sweep_input)
         input.fail("this input is also under ensemble.vary; an input is either swept or varied");
     const YamlValue values = sweep.get("values", "a list of values");
-    for (const YamlValue& v : values.list()) c.sweep_values.push_back(v.number(name_of(c.sweep_input).range));
+    for (const YamlValue& v : values.list())
+      c.sweep_values.push_back(v.number(name_of(c.sweep_input).range));
     if (c.sweep_values.empty()) values.fail("expected at least one value");
   }
   const YamlMap blocking = e.map("blocking");

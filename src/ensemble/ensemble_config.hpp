@@ -50,10 +50,10 @@ struct BlockingCriterion {
 };
 
 struct EnsembleConfig {
-  int members = 20;                  // per sweep value (the whole ensemble without a sweep)
-  unsigned long seed = 1;            // the ensemble's seed: member j's draws follow from (seed, j)
-  std::vector<VariedInput> vary;     // in the order of EnsembleInput
-  bool has_sweep = false;            // a sweep of one input over `sweep_values`
+  int members = 20;               // per sweep value (the whole ensemble without a sweep)
+  unsigned long seed = 1;         // the ensemble's seed: member j's draws follow from (seed, j)
+  std::vector<VariedInput> vary;  // in the order of EnsembleInput
+  bool has_sweep = false;         // a sweep of one input over `sweep_values`
   EnsembleInput sweep_input = EnsembleInput::log_length;
   std::vector<double> sweep_values;  // in the input's unit, in the order given
   BlockingCriterion blocking;

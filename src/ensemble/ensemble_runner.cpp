@@ -49,8 +49,8 @@ std::uint64_t fingerprint(const std::string& text) {
 
 bool ours(const fs::path& entry) {
   const std::string name = entry.filename().string();
-  return name.starts_with("member_") || name.starts_with("ensemble") ||
-         name.ends_with(".png") || name == ".flotsam-output";
+  return name.starts_with("member_") || name.starts_with("ensemble") || name.ends_with(".png") ||
+         name == ".flotsam-output";
 }
 
 /// Creates the folder, or finds an earlier ensemble of the same case in it (resume), or empties
@@ -142,9 +142,9 @@ Plan make_plan(const EnsembleOptions& options) {
   check_case_against_mesh(plan.base, plan.mesh.group_names);
   plan.geometry = jam_geometry_for(plan.base.mesh, plan.mesh,
                                    solid_group_indices(plan.mesh, plan.base.flow.boundaries));
-  const fs::path directory =
-      options.output.empty() ? fs::path(plan.base.output.directory) / plan.base.name
-                             : fs::path(options.output);
+  const fs::path directory = options.output.empty()
+                                 ? fs::path(plan.base.output.directory) / plan.base.name
+                                 : fs::path(options.output);
   plan.context.case_folder = fs::path(options.case_file).parent_path();
   plan.context.directory = fs::absolute(directory).lexically_normal();
   plan.context.source = options.case_file;
@@ -152,8 +152,10 @@ Plan make_plan(const EnsembleOptions& options) {
     for (const Gap& gap : plan.geometry.bridges.front().gaps)
       plan.context.gap_width = std::max(plan.context.gap_width, gap.width());
   // Inputs that cannot apply to this case are the ensemble's error, not a member's failure.
-  (void)member_case_text(plan.base_yaml, draw_member_inputs(plan.config, 0,
-                         static_cast<int>(plan.base.bodies.releases.size())), plan.context);
+  (void)member_case_text(
+      plan.base_yaml,
+      draw_member_inputs(plan.config, 0, static_cast<int>(plan.base.bodies.releases.size())),
+      plan.context);
   plan.manifest = fmt::format("flotsam ensemble 1\ncase {}\nfingerprint {:016x}\nmembers {}\n",
                               fs::absolute(options.case_file).lexically_normal().string(),
                               fingerprint(text), plan.config.total_members());
@@ -230,7 +232,8 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   std::string text;
   for (const MemberResult& r : mine) text += serialize_member(r);
   const std::vector<std::string> gathered = world.gather(text);
-  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (world.rank() != 0) return report;
 
   std::vector<MemberResult> results;
@@ -261,7 +264,8 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   write_ensemble_tables(directory, results, statistics, plan.config, plan.geometry);
   if (options.pictures)
     draw_ensemble_pictures(directory, results, statistics, plan.config, plan.mesh);
-  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
 

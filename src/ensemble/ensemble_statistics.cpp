@@ -111,8 +111,8 @@ EnsembleStatistics compute_ensemble_statistics(const std::vector<MemberResult>& 
     }
     for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
       const std::string& name = geometry.bridges[b].name;
-      sweep.blocking.push_back({name, static_cast<int>(b), -1,
-                                wilson_interval(bridge_blocked[b], sweep.members)});
+      sweep.blocking.push_back(
+          {name, static_cast<int>(b), -1, wilson_interval(bridge_blocked[b], sweep.members)});
       for (std::size_t g = 0; g < gap_blocked[b].size(); ++g)
         sweep.blocking.push_back({fmt::format("{} gap {}", name, g + 1), static_cast<int>(b),
                                   static_cast<int>(g),
@@ -142,9 +142,10 @@ std::string describe_inputs(const MemberInputs& inputs) {
 
 std::string format_sample(const char* what, const SampleSummary& s, const char* unit) {
   if (s.count == 0) return fmt::format("  {:<16}none\n", what);
-  return fmt::format("  {:<16}mean {:.4g}  min {:.4g}  median {:.4g}  p90 {:.4g}  max {:.4g} {}"
-                     "  ({} values)\n",
-                     what, s.mean, s.min, s.median, s.p90, s.max, unit, s.count);
+  return fmt::format(
+      "  {:<16}mean {:.4g}  min {:.4g}  median {:.4g}  p90 {:.4g}  max {:.4g} {}"
+      "  ({} values)\n",
+      what, s.mean, s.min, s.median, s.p90, s.max, unit, s.count);
 }
 
 }  // namespace
@@ -207,8 +208,8 @@ void write_ensemble_tables(const std::string& directory, const std::vector<Membe
                           "largest jam {}", "max blockage {} [-]", "max backwater rise {} [m]"})
       columns.push_back(fmt::format(fmt::runtime(c), line.name));
     for (std::size_t g = 0; g < line.gaps.size(); ++g)
-      for (const char* c : {"blocked {} gap {}", "blocking time {} gap {} [s]",
-                            "max cover {} gap {} [-]"})
+      for (const char* c :
+           {"blocked {} gap {}", "blocking time {} gap {} [s]", "max cover {} gap {} [-]"})
         columns.push_back(fmt::format(fmt::runtime(c), line.name, g + 1));
   }
   CsvWriter members(directory + "/ensemble_members.csv", columns);
@@ -240,9 +241,8 @@ void write_ensemble_tables(const std::string& directory, const std::vector<Membe
                       "probability [-]", "lower 95% [-]", "upper 95% [-]"});
   for (const SweepStatistics& sweep : statistics.sweep)
     for (const BlockingEstimate& b : sweep.blocking)
-      blocking.row({sweep.value, double(b.bridge + 1), double(b.gap + 1),
-                    double(b.blocked.trials), double(b.blocked.successes), b.blocked.p,
-                    b.blocked.lower, b.blocked.upper});
+      blocking.row({sweep.value, double(b.bridge + 1), double(b.gap + 1), double(b.blocked.trials),
+                    double(b.blocked.successes), b.blocked.p, b.blocked.lower, b.blocked.upper});
   // ensemble_bodies.csv: every body of every member that ran.
   CsvWriter bodies(directory + "/ensemble_bodies.csv",
                    {"member", "id", "x start [m]", "y start [m]", "x end [m]", "y end [m]",

@@ -39,14 +39,13 @@ struct SampleSummary {
 SampleSummary summarize(std::vector<double> values);
 
 /// Counts of `values` in `bins` equal bins over [lower, upper] (the last bin closed).
-std::vector<int> histogram(const std::vector<double>& values, double lower, double upper,
-                           int bins);
+std::vector<int> histogram(const std::vector<double>& values, double lower, double upper, int bins);
 
 /// The blocking estimate of one bridge or gap at one sweep value.
 struct BlockingEstimate {
   std::string target;  // "bridge_1", "bridge_1 gap 2"
   int bridge = 0;
-  int gap = -1;        // -1: the bridge as a whole
+  int gap = -1;  // -1: the bridge as a whole
   Proportion blocked;
 };
 
@@ -55,14 +54,14 @@ struct SweepStatistics {
   double value = 0.0;  // the swept input's value (0 without a sweep)
   int members = 0, failed = 0;
   std::vector<BlockingEstimate> blocking;  // per bridge, then its gaps
-  SampleSummary jam_size;        // largest jam at any bridge, per member [bodies]
-  SampleSummary backwater_rise;  // largest rise at any bridge, per member [m]
-  SampleSummary travel;          // per body [m]
+  SampleSummary jam_size;                  // largest jam at any bridge, per member [bodies]
+  SampleSummary backwater_rise;            // largest rise at any bridge, per member [m]
+  SampleSummary travel;                    // per body [m]
   double released = 0, passed = 0, left = 0, trapped = 0, stranded = 0, floating = 0;  // means
 };
 
 struct EnsembleStatistics {
-  std::vector<SweepStatistics> sweep;   // per sweep value, in the order given
+  std::vector<SweepStatistics> sweep;  // per sweep value, in the order given
   std::vector<const MemberResult*> failures;
 };
 

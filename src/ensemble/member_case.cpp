@@ -33,9 +33,13 @@ KeyedStream::KeyedStream(std::initializer_list<std::uint64_t> key) : state_(0x24
   }
 }
 
-std::uint64_t KeyedStream::next() { return splitmix64(state_); }
+std::uint64_t KeyedStream::next() {
+  return splitmix64(state_);
+}
 
-double KeyedStream::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double KeyedStream::uniform() {
+  return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
 double KeyedStream::normal() {
   const double u1 = 1.0 - uniform();  // in (0, 1]
@@ -86,16 +90,22 @@ MemberInputs draw_member_inputs(const EnsembleConfig& config, int member, int re
   return m;
 }
 
-std::string member_name(int member) { return fmt::format("member_{:04d}", member); }
+std::string member_name(int member) {
+  return fmt::format("member_{:04d}", member);
+}
 
 // ---- the member's case file --------------------------------------------------------------
 
 namespace {
 
 /// A number as the case reader reads it back exactly (the shortest text that round-trips).
-YAML::Node number_node(double v) { return YAML::Node(fmt::format("{}", v)); }
+YAML::Node number_node(double v) {
+  return YAML::Node(fmt::format("{}", v));
+}
 
-double node_number(const YAML::Node& node) { return std::stod(node.Scalar()); }
+double node_number(const YAML::Node& node) {
+  return std::stod(node.Scalar());
+}
 
 /// Relative paths of files next to the case become absolute (the member's case lives elsewhere).
 void make_paths_absolute(YAML::Node node, const std::filesystem::path& folder) {
@@ -200,9 +210,8 @@ std::string member_case_text(const YAML::Node& base, const MemberInputs& inputs,
                                    context.source, inputs.draw);
   for (const auto& [input, v] : inputs.values)
     header += fmt::format(", {} = {} {}", input_key(input), v, input_unit(input));
-  header += fmt::format(
-      ").\n# Rerun it alone:\n#   flotsam run {}.yaml -o {} --overwrite\n",
-      (context.directory / name).string(), (context.directory / name).string());
+  header += fmt::format(").\n# Rerun it alone:\n#   flotsam run {}.yaml -o {} --overwrite\n",
+                        (context.directory / name).string(), (context.directory / name).string());
   return header + out.c_str() + "\n";
 }
 

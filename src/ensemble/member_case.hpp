@@ -20,9 +20,9 @@
 namespace flotsam {
 
 struct MemberInputs {
-  int member = 0;       // index in the ensemble, from 0
-  int sweep_index = 0;  // which sweep value (0 without a sweep)
-  int draw = 0;         // j: the index of the member's draws
+  int member = 0;                                        // index in the ensemble, from 0
+  int sweep_index = 0;                                   // which sweep value (0 without a sweep)
+  int draw = 0;                                          // j: the index of the member's draws
   std::vector<std::pair<EnsembleInput, double>> values;  // swept and varied, in enum order
   std::vector<long> release_seeds;                       // one per bodies.release[k]
   /// The value of `input`; NaN when the member does not set it.

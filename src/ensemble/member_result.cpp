@@ -17,7 +17,9 @@ constexpr const char* result_file = "member.txt";
 constexpr const char* magic = "flotsam member 1";
 
 /// The shortest text that reads back as the same double ("nan" for NaN).
-std::string exact(double v) { return fmt::format("{}", v); }
+std::string exact(double v) {
+  return fmt::format("{}", v);
+}
 
 double read_double(std::istringstream& in) {
   std::string word;
@@ -47,7 +49,8 @@ std::string serialize_member(const MemberResult& r) {
   std::string s = std::string(magic) + "\n";
   const MemberInputs& in = r.inputs;
   s += fmt::format("member {} sweep {} draw {}\n", in.member, in.sweep_index, in.draw);
-  for (const auto& [input, v] : in.values) s += fmt::format("input {} {}\n", input_key(input), exact(v));
+  for (const auto& [input, v] : in.values)
+    s += fmt::format("input {} {}\n", input_key(input), exact(v));
   for (long seed : in.release_seeds) s += fmt::format("seed {}\n", seed);
   s += fmt::format("status {}\n", r.failed ? "failed" : "ok");
   if (r.failed) {
@@ -66,9 +69,9 @@ std::string serialize_member(const MemberResult& r) {
       s += fmt::format("gap {} {} {} {}\n", b, g.blocked ? 1 : 0, exact(g.blocking_time),
                        exact(g.max_cover));
   for (const BodyOutcome& b : r.bodies)
-    s += fmt::format("body {} {} {} {} {} {} {}\n", b.id, exact(b.start.x()), exact(b.start.y()),
-                     exact(b.end.x()), exact(b.end.y()), static_cast<int>(b.fate),
-                     b.passed ? 1 : 0);
+    s +=
+        fmt::format("body {} {} {} {} {} {} {}\n", b.id, exact(b.start.x()), exact(b.start.y()),
+                    exact(b.end.x()), exact(b.end.y()), static_cast<int>(b.fate), b.passed ? 1 : 0);
   s += fmt::format("wall {}\nend\n", exact(r.wall_seconds));
   return s;
 }

@@ -22,8 +22,8 @@ namespace flotsam {
 struct BridgeOutcome {
   bool blocked = false;  // at least one of its gaps blocked
   double blocking_time = std::numeric_limits<double>::quiet_NaN();  // [s] earliest gap's onset
-  int blocking_bodies = 0;   // bodies in the jams at the bridge when the blocking was confirmed
-  int largest_jam = 0;       // most bodies in one jam at the bridge, over the samples
+  int blocking_bodies = 0;    // bodies in the jams at the bridge when the blocking was confirmed
+  int largest_jam = 0;        // most bodies in one jam at the bridge, over the samples
   double max_blockage = 0.0;  // [-] largest blockage ratio of the bridge over the samples
   double max_rise = std::numeric_limits<double>::quiet_NaN();  // [m] largest backwater rise
                                                                // (NaN: no reference flow)
@@ -42,7 +42,7 @@ struct BodyOutcome {
   Vec2 start = Vec2::Zero();  // [m] G when the body first appeared (end of its release step)
   Vec2 end = Vec2::Zero();    // [m] G at the end (where it left, for a body gone)
   BodyFate fate = BodyFate::floating;
-  bool passed = false;        // beyond the last bridge and not in a jam (JamStatistics::passed)
+  bool passed = false;  // beyond the last bridge and not in a jam (JamStatistics::passed)
   double travel() const { return (end - start).norm(); }  // [m] straight-line distance
 };
 
@@ -51,7 +51,7 @@ struct MemberResult {
   bool failed = false;
   std::string message;  // why it failed (one line)
   int released = 0, passed = 0, left = 0, trapped = 0, stranded = 0, floating = 0;
-  std::vector<BridgeOutcome> bridges;  // per JamGeometry::bridges
+  std::vector<BridgeOutcome> bridges;         // per JamGeometry::bridges
   std::vector<std::vector<GapOutcome>> gaps;  // per bridge, per gap
   std::vector<BodyOutcome> bodies;
   double wall_seconds = 0.0;  // [s] the member's run (not in the summary)

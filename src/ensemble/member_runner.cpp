@@ -55,7 +55,8 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
   try {
     write_text(run.case_path, run.case_text);
     Case member_case = parse_case(run.case_text, run.case_path.string());
-    const bool has_bodies = !member_case.bodies.bodies.empty() || !member_case.bodies.releases.empty();
+    const bool has_bodies =
+        !member_case.bodies.bodies.empty() || !member_case.bodies.releases.empty();
     if (!has_bodies) throw_input_error("{}: the member has no bodies", run.case_path.string());
     RunOptions options{run.folder, true, true, false, false};
     Simulation simulation(std::move(member_case), *setup.mesh, options);

@@ -16,9 +16,9 @@ namespace flotsam {
 
 struct MemberRun {
   MemberInputs inputs;
-  std::string case_text;             // its case file (member_case_text)
-  std::filesystem::path case_path;   // where it is written: DIR/member_NNNN.yaml
-  std::filesystem::path folder;      // its results: DIR/member_NNNN/
+  std::string case_text;            // its case file (member_case_text)
+  std::filesystem::path case_path;  // where it is written: DIR/member_NNNN.yaml
+  std::filesystem::path folder;     // its results: DIR/member_NNNN/
 };
 
 /// What every member shares: the mesh (generated once), its jam geometry, the criterion.

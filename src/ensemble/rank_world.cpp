@@ -42,13 +42,13 @@ std::vector<std::string> RankWorld::gather(const std::string& text) const {
     total += lengths[r];
   }
   std::string all(rank_ == 0 ? static_cast<std::size_t>(total) : 0, '\0');
-  MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
-              MPI_CHAR, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR,
+              0, MPI_COMM_WORLD);
   if (rank_ != 0) return {};
   std::vector<std::string> texts;
   for (std::size_t r = 0; r < lengths.size(); ++r)
-    texts.push_back(all.substr(static_cast<std::size_t>(offsets[r]),
-                               static_cast<std::size_t>(lengths[r])));
+    texts.push_back(
+        all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(lengths[r])));
   return texts;
 }
 
@@ -70,9 +70,15 @@ void RankWorld::abort(int code) const {
 
 RankWorld::RankWorld() = default;
 RankWorld::~RankWorld() = default;
-std::vector<std::string> RankWorld::gather(const std::string& text) const { return {text}; }
-std::string RankWorld::broadcast(const std::string& text) const { return text; }
-void RankWorld::abort(int code) const { std::exit(code); }
+std::vector<std::string> RankWorld::gather(const std::string& text) const {
+  return {text};
+}
+std::string RankWorld::broadcast(const std::string& text) const {
+  return text;
+}
+void RankWorld::abort(int code) const {
+  std::exit(code);
+}
 
 #endif
 
