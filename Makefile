@@ -79,6 +79,10 @@ bench: build
 	@for c in bridge_piers bridge_flood; do \
 	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/' examples/$$c.yaml \
 	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
+	@echo "== ensemble examples/bridge_blocking.yaml on 2 jobs (docs/performance.md, Ensembles)"
+	OMP_NUM_THREADS=1 /usr/bin/time -f "bridge_blocking ensemble: %e s wall, %U s user" \
+	    $(BUILD)/flotsam ensemble examples/bridge_blocking.yaml -o $(BUILD)/bench_runs/bridge_blocking \
+	    --overwrite --jobs 2 -q | grep -E "ensemble|blocked bridge_1 |wall time"
 	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \
 	          $(BUILD)/bench_runs/bridge_piers_fv.yaml $(BUILD)/bench_runs/bridge_flood_fv.yaml \
 	          examples/dam_break_valley.yaml; do \
