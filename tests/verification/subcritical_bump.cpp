@@ -95,21 +95,5 @@ TEST(SubcriticalBump, CharacteristicsMarchedToSteadyFollowBernoulli) {
               error, solver.time());
 }
 
-// The segregated step (flow.scheme: segregated) marched to its steady state the same way, within
-// the same 1% of Bernoulli.
-TEST(SubcriticalBump, SegregatedMarchedToSteadyFollowsBernoulli) {
-  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 25.0, 1.0, 100, 2, true});
-  Case c = bump_case();
-  c.flow.scheme = FlowScheme::segregated;
-  ShallowWaterSolver solver(mesh, c, bump_options(Advection::characteristics));
-  solver.initialize();
-  const double change = solver.march_to_steady(0.25, 1e-8, 400.0);
-  ASSERT_LE(change, 1e-8);
-  const double error = bernoulli_error(solver);
-  EXPECT_LE(error, 0.01);
-  std::printf("bump, segregated at dt = 0.25 s: max relative depth error %.3e at t = %g s\n", error,
-              solver.time());
-}
-
 }  // namespace
 }  // namespace flotsam

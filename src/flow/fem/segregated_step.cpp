@@ -316,11 +316,17 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
 
     // The constraint P_a of each node: free, fixed (velocity nodes), or u . normal = 0 (walls,
     // and the tangent of elevation boundaries where water enters, from u^n).
-    std::vector<Mat2> P(N2, Mat2::Identity());
+    // The tangent held at an elevation boundary (where water enters, which changes from step to
+    // step where eddies leave) is applied after the correction only, so that the matrix of
+    // (M-22) changes with H and gamma alone and its factor stays a good preconditioner.
+    std::vector<Mat2> P(N2, Mat2::Identity()), P_after(N2, Mat2::Identity());
     for (const auto& node : s.bc_.velocity_nodes) P[node.node].setZero();
     for (const SlipNode& slip : s.bc_.slip_nodes) {
-      if (slip.outward.dot(Vec2(n.u[slip.node], n.v[slip.node])) > 0.0) continue;
-      P[slip.node] = Mat2::Identity() - slip.normal * slip.normal.transpose();
+      const Mat2 tangent = Mat2::Identity() - slip.normal * slip.normal.transpose();
+      if (slip.outward.isZero())
+        P[slip.node] = tangent;  // wall
+      else if (slip.outward.dot(Vec2(n.u[slip.node], n.v[slip.node])) <= 0.0)
+        P_after[slip.node] = tangent;
     }
     std::vector<double> H(N2);
     std::vector<Eigen::Triplet<double>> d;
@@ -392,8 +398,9 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     for (int a = 0; a < N2; ++a) {
       const Vec2 correction =
           th * g / A[a] * (P[a] * Vec2(G_d_eta[2 * a], G_d_eta[2 * a + 1]));  // [m/s]
-      next.u[a] -= correction.x();
-      next.v[a] -= correction.y();
+      const Vec2 u_new = P_after[a] * Vec2(next.u[a] - correction.x(), next.v[a] - correction.y());
+      next.u[a] = u_new.x();
+      next.v[a] = u_new.y();
     }
     for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
     next.time = it.t_new;
