@@ -70,6 +70,8 @@ bench: build
 	@echo "== FEM engine (docs/performance.md): time per step, steady mode at Re = 20 and at the"
 	@echo "   case's Re = 1000 with the paper's mixing length, 1 h at dt = 1 s"
 	$(BUILD)/bench/bench_flow_channel scaling 14.5 40 1
+	FLOTSAM_FLOW_SCHEME=segregated $(BUILD)/bench/bench_flow_channel scaling 14.5 40 1
+	FLOTSAM_FLOW_SCHEME=segregated $(BUILD)/bench/bench_flow_channel scaling 4.33 10 1
 	$(BUILD)/bench/bench_flow_channel steady 0 1.5
 	FLOTSAM_FLOW_TURBULENCE=mixing-length $(BUILD)/bench/bench_flow_channel steady
 	$(BUILD)/bench/bench_flow_channel unsteady 1 3600

@@ -23,6 +23,7 @@
 // the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu KLU instead of UMFPACK
 // (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the approximate inverse of an
 // iterative refinement, or not (all modes; unset: FlowSolverOptions' default),
+// FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all modes but steady),
 // FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
 // FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (steady, unsteady;
 // unset: the case's), FLOTSAM_FLOW_TRACE=S a line every S seconds of simulated time with the
@@ -98,6 +99,14 @@ void set_reuse_from_environment(FlowSolverOptions& options) {
 // FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta and FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length
 // replace the case's; false, with a message, for any other value.
 bool set_case_from_environment(Case& c) {
+  if (const char* e = std::getenv("FLOTSAM_FLOW_SCHEME")) {
+    const std::string scheme = e;
+    if (scheme != "coupled" && scheme != "segregated") {
+      std::fprintf(stderr, "FLOTSAM_FLOW_SCHEME=%s: expected coupled or segregated\n", e);
+      return false;
+    }
+    c.flow.scheme = scheme == "segregated" ? FlowScheme::segregated : FlowScheme::coupled;
+  }
   if (const char* e = std::getenv("FLOTSAM_FLOW_TIME_SCHEME")) {
     const std::string scheme = e;
     if (scheme != "bdf2" && scheme != "theta") {
@@ -130,6 +139,10 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
       "refactorisations after the refinement stalled\n",
       counts.solves, counts.factorisations, counts.refinement_iterations,
       counts.refinement_failures);
+  if (const SegregatedStep* segregated = solver.segregated_step())
+    std::printf(
+        "segregated: %ld CG iterations of the elevation system, %ld Cholesky factorisations\n",
+        segregated->elevation_iterations(), segregated->factorisations());
 }
 
 int run_steady(double mesh_size, double viscosity) {
@@ -211,11 +224,12 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   }
   const double wall = seconds_since(start);
   std::printf(
-      "unsteady: %d elements, %d threads, dt %g s, %d steps to t = %g s: %.2f s wall, %.2f ms "
-      "per step, %.2f Newton iterations per step, balance %.2e, peak memory %.1f MiB\n",
-      mesh.element_count(), omp_get_max_threads(), dt, steps, solver.time(), wall,
-      1e3 * wall / steps, static_cast<double>(iterations) / steps,
-      solver.water_balance().relative_error(), peak_memory_mib());
+      "unsteady: %s, %d elements, %d threads, dt %g s, %d steps to t = %g s: %.2f s wall, %.2f "
+      "ms per step, %.2f Newton iterations per step, balance %.2e, peak memory %.1f MiB\n",
+      c.flow.scheme == FlowScheme::segregated ? "segregated" : "coupled", mesh.element_count(),
+      omp_get_max_threads(), dt, steps, solver.time(), wall, 1e3 * wall / steps,
+      static_cast<double>(iterations) / steps, solver.water_balance().relative_error(),
+      peak_memory_mib());
   std::printf(
       "discharge in %.2f m^3/s, out %.2f m^3/s at the end; in %.2f m^3/s on average over "
       "the last third\n",
@@ -272,7 +286,8 @@ int run_section(const std::string& file, double x) {
 }
 
 int run_scaling(double mesh_size, int steps, double dt) {
-  const Case c = paper_channel_case(mesh_size, true);
+  Case c = paper_channel_case(mesh_size, true);
+  if (!set_case_from_environment(c)) return 2;
   const auto mesh_start = Clock::now();
   const Mesh mesh = paper_channel_mesh(c);
   const double mesh_wall = seconds_since(mesh_start);
@@ -290,11 +305,12 @@ int run_scaling(double mesh_size, int steps, double dt) {
   for (int n = 0; n < steps; ++n) iterations += solver.step(dt).iterations;
   const double wall = seconds_since(start);
   std::printf(
-      "scaling: mesh_size %g m, %d elements, %d unknowns, %d threads: mesh %.2f s, setup %.2f s, "
-      "%.1f ms per step (%.2f iterations per step), peak memory %.1f MiB\n",
-      mesh_size, mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count,
-      omp_get_max_threads(), mesh_wall, setup_wall, 1e3 * wall / steps,
-      static_cast<double>(iterations) / steps, peak_memory_mib());
+      "scaling: %s, mesh_size %g m, %d elements, %d unknowns, %d threads: mesh %.2f s, setup "
+      "%.2f s, %.1f ms per step (%.2f iterations per step), peak memory %.1f MiB\n",
+      c.flow.scheme == FlowScheme::segregated ? "segregated" : "coupled", mesh_size,
+      mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count, omp_get_max_threads(),
+      mesh_wall, setup_wall, 1e3 * wall / steps, static_cast<double>(iterations) / steps,
+      peak_memory_mib());
   print_linear_solver_counts(solver);
   return 0;
 }

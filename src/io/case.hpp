@@ -95,8 +95,14 @@ struct FrictionMapConfig {
   bool empty() const { return !raster && zones.empty(); }
 };
 
+/// How the FEM engine advances a step (docs/model.md "FEM engine"): one coupled (u, eta) system
+/// per step, or the segregated (projection) step: momentum with a lumped P2 mass, then one SPD P1
+/// system for the elevation (src/flow/fem/segregated_step.hpp).
+enum class FlowScheme { coupled, segregated };
+
 struct FlowConfig {
   FlowEngineKind engine = FlowEngineKind::fem;
+  FlowScheme scheme = FlowScheme::coupled;  // FEM engine only
   FiniteVolumeConfig fv;
   double gravity = 9.81;          // g [m s^-2]
   double water_density = 1000.0;  // rho [kg m^-3]

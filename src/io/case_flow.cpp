@@ -150,6 +150,12 @@ FlowConfig read_flow(const YamlMap& m, const std::filesystem::path& case_folder,
     flow.fv = read_finite_volume(m.map("fv"));
   else
     m.forbid("fv", "flow.fv only applies to 'engine: fv' (the engine is fem)");
+  if (const auto scheme = m.find("scheme")) {
+    if (flow.engine == FlowEngineKind::fv)
+      scheme->fail("flow.scheme only applies to 'engine: fem' (the engine is fv)");
+    flow.scheme = scheme->choice<FlowScheme>(
+        {{"coupled", FlowScheme::coupled}, {"segregated", FlowScheme::segregated}});
+  }
   flow.gravity = m.number("gravity", flow.gravity, Range::positive());
   flow.water_density = m.number("density", flow.water_density, Range::positive());
   flow.viscosity = read_viscosity(m, flow.viscosity);

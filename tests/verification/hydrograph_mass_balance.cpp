@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "../support/flow_schemes.hpp"
 #include "../support/straight_channel.hpp"
 #include "../support/time_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
@@ -19,7 +20,13 @@
 namespace flotsam {
 namespace {
 
-class HydrographMassBalance : public testing::TestWithParam<TimeScheme> {};
+// The coupled step with either time scheme, and the segregated step (theta-scheme).
+struct Schemes {
+  FlowScheme flow;
+  TimeScheme time;
+};
+
+class HydrographMassBalance : public testing::TestWithParam<Schemes> {};
 
 TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 500.0, 40.0, 25, 4, true});
@@ -27,7 +34,8 @@ TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
   Case c = test::straight_channel_case("hydrograph", Q, 2.0);      // [m] over a flat bed
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
-  c.time.scheme = GetParam();
+  c.flow.scheme = GetParam().flow;
+  c.time.scheme = GetParam().time;
   ShallowWaterSolver solver(mesh, c);
   solver.initialize();
   const double dt = 10.0;  // [s] Courant sqrt(g H) dt / h = 4.4 * 10 / 10 ~ 4.4
@@ -46,8 +54,14 @@ TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
               balance.relative_error(), entered, inflow, balance.lag);
 }
 
-INSTANTIATE_TEST_SUITE_P(TimeSchemes, HydrographMassBalance, test::both_time_schemes,
-                         test::time_scheme_name);
+INSTANTIATE_TEST_SUITE_P(Schemes, HydrographMassBalance,
+                         testing::Values(Schemes{FlowScheme::coupled, TimeScheme::theta},
+                                         Schemes{FlowScheme::coupled, TimeScheme::bdf2},
+                                         Schemes{FlowScheme::segregated, TimeScheme::theta}),
+                         [](const testing::TestParamInfo<Schemes>& p) {
+                           return test::scheme_name(p.param.flow) + "_" +
+                                  test::scheme_name(p.param.time);
+                         });
 
 }  // namespace
 }  // namespace flotsam

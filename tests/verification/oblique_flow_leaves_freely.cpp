@@ -4,12 +4,14 @@
 // exact steady solution of (M-1): it enters through the left and bottom sides (velocity
 // imposed), leaves through the top (velocity imposed) and through the right side, where only
 // eta = 2 m is imposed. Started from that solution, 20 steps of 2 s (both time schemes, with
-// characteristics) must keep it: max |u - (1, 0.3)| <= 1e-9 m/s and max |eta - 2| <= 1e-9 m.
-// Holding u . t = 0 at the right side too would force v = 0 there, an error of 0.3 m/s.
+// characteristics, and the segregated step) must keep it: max |u - (1, 0.3)| <= 1e-9 m/s and max
+// |eta - 2| <= 1e-9 m. Holding u . t = 0 at the right side too would force v = 0 there, an error of
+// 0.3 m/s.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "../support/flow_schemes.hpp"
 #include "../support/time_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -17,7 +19,13 @@
 namespace flotsam {
 namespace {
 
-class ObliqueFlow : public testing::TestWithParam<TimeScheme> {};
+// The coupled step with either time scheme, and the segregated step (theta-scheme).
+struct Schemes {
+  FlowScheme flow;
+  TimeScheme time;
+};
+
+class ObliqueFlow : public testing::TestWithParam<Schemes> {};
 
 TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   const double U = 1.0, V = 0.3, H = 2.0;  // [m/s], [m/s], [m]
@@ -25,7 +33,8 @@ TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   Case c;
   c.flow.initial_eta_start = c.flow.initial_eta_end = H;
   c.flow.viscosity = 0.01;  // [m^2/s]
-  c.time.scheme = GetParam();
+  c.flow.scheme = GetParam().flow;
+  c.time.scheme = GetParam().time;
   const TimeSeries u(U), v(V);
   for (const char* side : {"left", "bottom", "top"})
     c.flow.boundaries.push_back({BoundaryCondition::Kind::velocity, side, u, v, 0});
@@ -46,7 +55,14 @@ TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   std::printf("oblique flow: max |u - U| %.2e m/s, max |eta - H| %.2e m\n", du, deta);
 }
 
-INSTANTIATE_TEST_SUITE_P(TimeSchemes, ObliqueFlow, test::both_time_schemes, test::time_scheme_name);
+INSTANTIATE_TEST_SUITE_P(Schemes, ObliqueFlow,
+                         testing::Values(Schemes{FlowScheme::coupled, TimeScheme::theta},
+                                         Schemes{FlowScheme::coupled, TimeScheme::bdf2},
+                                         Schemes{FlowScheme::segregated, TimeScheme::theta}),
+                         [](const testing::TestParamInfo<Schemes>& p) {
+                           return test::scheme_name(p.param.flow) + "_" +
+                                  test::scheme_name(p.param.time);
+                         });
 
 }  // namespace
 }  // namespace flotsam

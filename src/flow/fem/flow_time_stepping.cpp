@@ -26,6 +26,11 @@ double max_abs_difference(const std::vector<double>& a, const std::vector<double
 }  // namespace
 
 StepReport ShallowWaterSolver::step(double dt) {
+  if (segregated_) return segregated_->step(*this, dt);
+  return step_coupled(dt);
+}
+
+StepReport ShallowWaterSolver::step_coupled(double dt) {
   if (history_) std::swap(before_, previous_);  // t^{n-1}
   previous_ = state_;
   const Iteration it = time_step(dt);
@@ -206,6 +211,10 @@ void ShallowWaterSolver::record_fluxes(const Eigen::VectorXd& x) {
 // the theta-scheme (inv_dt dt = now = 1, before = 0).
 void ShallowWaterSolver::update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x) {
   record_fluxes(x);
+  accumulate_balance(it, dt);
+}
+
+void ShallowWaterSolver::accumulate_balance(const Iteration& it, double dt) {
   const double V_new = volume(), V_n = balance_.volume;
   const double V_before = it.before != 0.0 ? volume_of(before_) : 0.0;
   balance_.lag += V_new - V_n - dt * it.inv_dt * (V_new - it.now * V_n - it.before * V_before);
@@ -222,6 +231,12 @@ void ShallowWaterSolver::update_balance(const Iteration& it, double dt, const Ei
     }
   }
   balance_.volume = V_new;
+}
+
+double ShallowWaterSolver::node_depth_of(const FlowState& s, int node) const {
+  if (node < mesh_.vertex_count) return s.eta[node] - z_b_[node];
+  const auto& ends = mid_vertices_[node];
+  return 0.5 * (s.eta[ends[0]] + s.eta[ends[1]]) - z_b_[node];
 }
 
 void ShallowWaterSolver::check_state(const FlowState& s, double t) const {

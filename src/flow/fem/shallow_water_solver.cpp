@@ -29,6 +29,13 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
         "has no rain or infiltration source",
         at);
   }
+  if (flow_case.flow.scheme == FlowScheme::segregated &&
+      (flow_case.time.scheme != TimeScheme::theta ||
+       options_.advection != Advection::characteristics))
+    throw_input_error(
+        "{}: flow.scheme: segregated takes the theta-scheme (time.scheme: theta) and advection "
+        "by characteristics",
+        flow_case.file.empty() ? "case" : flow_case.file);
   if (flow_case.flow.friction != FrictionLaw::none) {  // (M-19) at each element's centroid
     std::vector<Vec2> centroids(mesh.element_count());
     for (int e = 0; e < mesh.element_count(); ++e) {
@@ -88,7 +95,9 @@ void ShallowWaterSolver::initialize() {
   set_state(initial);
 }
 
-void ShallowWaterSolver::setup_system() {
+// The coupled system's pattern and the P2 mass of its explicit part: for the coupled step, and
+// for the steady solve whichever the step (set up when it first runs).
+void ShallowWaterSolver::setup_coupled_system() {
   std::vector<int> dirichlet_rows, slip_nodes;
   const int eta_offset = 2 * mesh_.node_count();  // LinearSystem::eta_row before setup
   for (const auto& n : bc_.elevation_nodes) dirichlet_rows.push_back(eta_offset + n.vertex);
@@ -98,13 +107,19 @@ void ShallowWaterSolver::setup_system() {
   }
   for (const auto& n : bc_.slip_nodes) slip_nodes.push_back(n.node);
   system_.setup(mesh_, dirichlet_rows, slip_nodes);
+  // The theta-scheme's explicit slope and Coriolis are projected on P2 (departure_values); BDF2
+  // has no explicit part.
+  if (options_.advection == Advection::characteristics && case_.time.scheme == TimeScheme::theta)
+    mass_.emplace(mesh_);
+  coupled_system_ready_ = true;
+}
+
+void ShallowWaterSolver::setup_system() {
   colours_ = element_colours(mesh_);
-  if (options_.advection == Advection::characteristics) {
-    characteristics_.emplace(mesh_);
-    // The theta-scheme's explicit slope and Coriolis are projected on P2 (departure_values);
-    // BDF2 has no explicit part.
-    if (case_.time.scheme == TimeScheme::theta) mass_.emplace(mesh_);
-  }
+  if (options_.advection == Advection::characteristics) characteristics_.emplace(mesh_);
+  coupled_system_ready_ = false;
+  segregated_.reset();
+  if (case_.flow.scheme == FlowScheme::coupled) setup_coupled_system();
   nu_t_.assign(mesh_.element_count(), 0.0);
   open_flux_.assign(mesh_.group_names.size(), 0.0);
   elevation_group_.clear();
@@ -120,6 +135,8 @@ void ShallowWaterSolver::setup_system() {
   mid_vertices_.assign(mesh_.node_count(), {-1, -1});
   for (const auto& el : mesh_.elements)
     for (int k = 0; k < 3; ++k) mid_vertices_[el[3 + k]] = {el[k], el[(k + 1) % 3]};
+  if (case_.flow.scheme == FlowScheme::segregated)
+    segregated_ = std::make_unique<SegregatedStep>(*this);
 
   // Integrals of the P1 basis and of the bed, with the assembly's quadrature.
   lumped_p1_.assign(mesh_.vertex_count, 0.0);
@@ -154,7 +171,7 @@ void ShallowWaterSolver::set_state(const FlowState& s, const FlowState* before) 
   history_ = before && before->time < s.time;
   previous_ = history_ ? *before : s;
   linearisation_ = s;
-  solver_.refactorise();
+  start_fresh_factorisation();
   double H_sum = 0.0, A_sum = 0.0;
   for (int j = 0; j < mesh_.vertex_count; ++j) {
     H_sum += lumped_p1_[j] * (s.eta[j] - z_b_[j]);

@@ -10,6 +10,7 @@
 // Outline (as a deal.II tutorial): setup_system -> [assemble_system -> apply_boundary_conditions
 // -> solve] per iteration -> check_state; step() and solve_steady() call them in order.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "flow/fem/linear_solver.hpp"
 #include "flow/fem/linear_system.hpp"
 #include "flow/fem/mass_matrix.hpp"
+#include "flow/fem/segregated_step.hpp"
 #include "flow/flow_state.hpp"
 #include "flow/water_balance.hpp"
 #include "io/case.hpp"
@@ -85,10 +87,14 @@ class ShallowWaterSolver {
   /// The next linear solve factorises afresh instead of reusing the last LU
   /// (FlowSolverOptions::reuse_factorisation). At a checkpoint: a run restarted from it starts
   /// with a fresh LU, so the run that goes on must too for both to stay the same bit for bit.
-  void start_fresh_factorisation() { solver_.refactorise(); }
+  void start_fresh_factorisation() {
+    solver_.refactorise();
+    if (segregated_) segregated_->refactorise();
+  }
 
-  /// Advances the flow by dt [s]. Throws RunError when a node dries or the solution is not
-  /// finite; the state is then left at the start of the step.
+  /// Advances the flow by dt [s] with the case's flow.scheme: the coupled step (one (u, eta)
+  /// system) or the segregated one (segregated_step.hpp). Throws RunError when a node dries or the
+  /// solution is not finite; the state is then left at the start of the step.
   StepReport step(double dt);
   /// Drives the flow at the current time to steady state: Newton's method for the steady
   /// (Eulerian, SUPG) equations with a pseudo time term, whose step shrinks when a node dries or
@@ -133,8 +139,13 @@ class ShallowWaterSolver {
   const BoundaryConditions& boundary_conditions() const { return bc_; }
   /// Solves, factorisations and Krylov iterations of the linear solver so far.
   const LinearSolverCounts& linear_solver_counts() const { return solver_.counts(); }
+  /// The segregated step (flow.scheme: segregated), null with the coupled one.
+  const SegregatedStep* segregated_step() const { return segregated_.get(); }
 
  private:
+  friend class SegregatedStep;
+  StepReport step_coupled(double dt);
+  void setup_coupled_system();
   struct Iteration {  // the linearised problem of one iteration
     double theta, inv_dt, t_new, t_source;
     bool characteristics;          // advection done by characteristics, else Eulerian
@@ -160,6 +171,10 @@ class ShallowWaterSolver {
   Eigen::VectorXd pack(const FlowState& s) const;
   void record_fluxes(const Eigen::VectorXd& x);
   void update_balance(const Iteration& it, double dt, const Eigen::VectorXd& x);
+  // The step's group rates (set before) into the sums, the volume, the source, BDF2's lag.
+  void accumulate_balance(const Iteration& it, double dt);
+  // H = eta - z_b [m] at P2 node `node` of state s (mid nodes: eta the mean of the edge's ends).
+  double node_depth_of(const FlowState& s, int node) const;
   void restart_water_balance();  // V(0) = V now, nothing through the boundaries yet
   void check_state(const FlowState& s, double t) const;
   double volume_of(const FlowState& s) const;  // [m^3]
@@ -176,7 +191,9 @@ class ShallowWaterSolver {
   LinearSolver solver_;
   std::vector<std::vector<int>> colours_;
   std::optional<Characteristics> characteristics_;
-  std::optional<P2MassMatrix> mass_;  // with characteristics and the theta-scheme
+  std::optional<P2MassMatrix> mass_;            // with characteristics and the theta-scheme
+  bool coupled_system_ready_ = false;           // system_ set up (coupled step, steady solve)
+  std::unique_ptr<SegregatedStep> segregated_;  // flow.scheme: segregated
   // [m/s] per P2 node: the time term's start u_d with characteristics (departure_values)
   std::vector<double> u_departure_, v_departure_;
 

@@ -104,6 +104,7 @@ bool ShallowWaterSolver::newton_to_steady(Iteration it, double dt, double dt_max
 }
 
 SteadyReport ShallowWaterSolver::solve_steady() {
+  if (!coupled_system_ready_) setup_coupled_system();  // the steady equations are coupled
   const auto& flow = case_.flow;
   double h_min = std::numeric_limits<double>::max(), h_max = 0.0, H_max = 0.0;
   for (double a : mesh_.area) {

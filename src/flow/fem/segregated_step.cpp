@@ -1,0 +1,427 @@
+#include "flow/fem/segregated_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
+#include "flow/fem/turbulence.hpp"
+
+namespace flotsam {
+
+namespace {
+
+constexpr int max_reused_iterations = 8;  // CG iterations with an aged factor before refactorising
+constexpr double cg_tolerance = 1e-12;    // [-] |r| / |b| that ends a conjugate-gradient solve
+constexpr int max_cg_iterations = 200;    // [-] of the momentum predictor (Jacobi, diagonally
+                                          // dominant: nu dt / h^2 << 1 makes it a few)
+
+using Vector = Eigen::VectorXd;
+
+// Conjugate gradients for A x = b on the free entries (fixed ones keep their value in x):
+// apply(p, Ap) computes A p, precondition(r, z) z = P^-1 r; both see zero at fixed entries.
+template <class Apply, class Precondition>
+int conjugate_gradients(const Apply& apply, const Precondition& precondition,
+                        const std::vector<char>& fixed, const Vector& b, Vector& x,
+                        double tolerance, int max_iterations) {
+  const auto mask = [&](Vector& w) {
+    for (Eigen::Index i = 0; i < w.size(); ++i)
+      if (fixed[i]) w[i] = 0.0;
+  };
+  Vector Ap(x.size());
+  apply(x, Ap);
+  Vector r = b - Ap;
+  mask(r);
+  const double b_norm = [&] {
+    Vector bf = b;
+    mask(bf);
+    return bf.norm();
+  }();
+  const double stop = tolerance * std::max(b_norm, 1e-300);
+  if (r.norm() <= stop) return 0;
+  Vector z(x.size());
+  precondition(r, z);
+  mask(z);
+  Vector p = z;
+  double rz = r.dot(z);
+  for (int k = 1; k <= max_iterations; ++k) {
+    apply(p, Ap);
+    mask(Ap);
+    const double alpha = rz / p.dot(Ap);
+    x += alpha * p;
+    r -= alpha * Ap;
+    if (r.norm() <= stop) return k;
+    precondition(r, z);
+    mask(z);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return max_iterations + 1;  // not converged
+}
+
+}  // namespace
+
+// Per-node momentum loads of one step [m^3 s^-2], the lumped friction [m^2/s], and the P1
+// continuity source [m^3/s].
+struct SegregatedStep::Loads {
+  std::vector<Vec2> force;      // (7) forcing, minus the explicit transposed viscous part of (4)
+  std::vector<double> gamma_m;  // sum over elements of m_a^e gamma_a: friction (5), lumped
+  Vector source;                // (11) (q_i, S)
+};
+
+SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.mesh()) {
+  const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count, E = mesh_.element_count();
+  m_.assign(N2, 0.0);
+  std::vector<Eigen::Triplet<double>> g, m1, k;
+  g.reserve(36 * static_cast<size_t>(E));
+  m1.reserve(9 * static_cast<size_t>(E));
+  k.reserve(36 * static_cast<size_t>(E));
+  ElementValues ev;
+  for (int e = 0; e < E; ++e) {
+    compute_element_values(mesh_, e, ev, false);
+    const auto& el = mesh_.elements[e];
+    std::array<double, 6> diagonal{};  // (N_a, N_a) [m^2]
+    double area = 0.0;
+    for (int q = 0; q < triangle_point_count; ++q) {
+      area += ev.JxW[q];
+      for (int a = 0; a < 6; ++a) {
+        diagonal[a] += ev.N2[q][a] * ev.N2[q][a] * ev.JxW[q];
+        for (int i = 0; i < 3; ++i)
+          for (int c = 0; c < 2; ++c)
+            g.emplace_back(2 * el[a] + c, el[i], ev.N2[q][a] * ev.dN1[q][i][c] * ev.JxW[q]);
+      }
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          m1.emplace_back(el[i], el[j], ev.N1[q][i] * ev.N1[q][j] * ev.JxW[q]);  // (8)
+    }
+    double sum = 0.0;
+    for (double d : diagonal) sum += d;
+    for (int a = 0; a < 6; ++a) m_[el[a]] += area * diagonal[a] / sum;  // M_L, diagonal scaling
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) k.emplace_back(el[a], el[b], 0.0);
+  }
+  G_.resize(2 * N2, N1);
+  G_.setFromTriplets(g.begin(), g.end());
+  M1_.resize(N1, N1);
+  M1_.setFromTriplets(m1.begin(), m1.end());
+  K_.resize(N2, N2);
+  K_.setFromTriplets(k.begin(), k.end());
+  K_.makeCompressed();
+  k_position_.resize(36 * static_cast<size_t>(E));
+  for (int e = 0; e < E; ++e) {
+    const auto& el = mesh_.elements[e];
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) {
+        const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[el[b]];
+        const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[el[b] + 1];
+        k_position_[36 * e + 6 * a + b] =
+            static_cast<int>(std::lower_bound(begin, end, el[a]) - K_.innerIndexPtr());
+      }
+  }
+}
+
+SegregatedStep::~SegregatedStep() = default;
+
+// One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3), the
+// explicit transposed-gradient viscous part, the forcing (7), the friction rate (5) lumped at
+// the nodes, the continuity source (11).
+void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads) {
+  const FlowConfig& flow = s.case_.flow;
+  const FlowState& n = s.previous_;
+  const int N2 = mesh_.node_count();
+  loads.force.assign(N2, Vec2::Zero());
+  loads.gamma_m.assign(N2, 0.0);
+  loads.source = Vector::Zero(mesh_.vertex_count);
+  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  AssemblyParameters p;
+  p.friction = FrictionModel::from(flow);
+  const Vec2 wind_stress = air_density / flow.water_density * wind_drag_coefficient *
+                           flow.wind.norm() * flow.wind;  // (M-2) wind, times H [m^2 s^-2]
+  const SourceFunction* source = s.options_.source ? &s.options_.source : nullptr;
+  s.for_each_element([&](int e) {
+    FrictionModel friction = p.friction;
+    if (!s.friction_coefficient_.empty()) friction.coefficient = s.friction_coefficient_[e];
+    ElementValues ev;
+    compute_element_values(mesh_, e, ev, false);
+    const auto& el = mesh_.elements[e];
+    ElementFlowAverage avg;
+    std::array<double, 6> diagonal{};
+    for (int q = 0; q < triangle_point_count; ++q) {
+      avg.area += ev.JxW[q];
+      for (int b = 0; b < 6; ++b) {
+        const Vec2 ub(n.u[el[b]], n.v[el[b]]);
+        avg.u += ev.JxW[q] * ev.N2[q][b] * ub;
+        avg.grad_u += ev.JxW[q] * ub * ev.dN2[q][b].transpose();
+        avg.H -= ev.JxW[q] * ev.N2[q][b] * s.z_b_[el[b]];
+        diagonal[b] += ev.N2[q][b] * ev.N2[q][b] * ev.JxW[q];
+      }
+      for (int j = 0; j < 3; ++j) avg.H += ev.JxW[q] * ev.N1[q][j] * n.eta[el[j]];
+    }
+    const double A = avg.area;
+    avg.u /= A;
+    avg.grad_u /= A;
+    avg.H /= A;
+    double nu_t = 0.0;
+    if (flow.turbulence != TurbulenceModel::none)
+      nu_t = eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction, avg);  // (M-3)
+    s.nu_t_[e] = nu_t;
+    const double nu_e = flow.viscosity + nu_t;  // (M-3) [m^2/s]
+    double diagonal_sum = 0.0;
+    for (double d : diagonal) diagonal_sum += d;
+    for (int a = 0; a < 6; ++a) {  // (5) friction, lumped: m_a^e gamma(|u^n_a|, H^n_a)
+      const double H_a = s.node_depth_of(n, el[a]);
+      const double gamma = friction.rate(std::hypot(n.u[el[a]], n.v[el[a]]), H_a);
+      loads.gamma_m[el[a]] += A * diagonal[a] / diagonal_sum * gamma;
+    }
+    for (int q = 0; q < triangle_point_count; ++q) {
+      const auto& N = ev.N2[q];
+      Mat2 G_n = Mat2::Zero();  // d u_i / d x_j at t^n
+      Vec2 force = s.element_forces_.empty() ? Vec2::Zero() : s.element_forces_[e];
+      double z_b = 0.0, eta = 0.0;
+      for (int b = 0; b < 6; ++b) {
+        G_n += Vec2(n.u[el[b]], n.v[el[b]]) * ev.dN2[q][b].transpose();
+        z_b += N[b] * s.z_b_[el[b]];
+        if (!s.node_forces_.empty()) force += N[b] * s.node_forces_[el[b]];
+      }
+      for (int j = 0; j < 3; ++j) eta += ev.N1[q][j] * n.eta[el[j]];
+      force += wind_stress / std::max(eta - z_b, p.friction.min_depth);  // (7) wind
+      double S = 0.0;
+      if (source) {
+        const SourceTerms src = (*source)(ev.x[q], t_source);
+        force += src.momentum;  // (7)
+        S = src.continuity;
+      }
+      const double JxW = ev.JxW[q];
+      for (int a = 0; a < 6; ++a) {
+        const Vec2& dN_a = ev.dN2[q][a];
+        // (4), transposed half (nu_e grad u^T, grad w) at t^n; force (7)
+        loads.force[el[a]] += (N[a] * force - nu_e * G_n.transpose() * dN_a) * JxW;
+        for (int b = 0; b < 6; ++b)
+          K_.valuePtr()[k_position_[36 * e + 6 * a + b]] +=
+              nu_e * dN_a.dot(ev.dN2[q][b]) * JxW;  // (4), (nu_e grad u, grad w)
+      }
+      for (int i = 0; i < 3; ++i) loads.source[el[i]] += ev.N1[q][i] * S * JxW;  // (11)
+    }
+  });
+}
+
+// (M-21) for u and v apart: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -
+// (1-theta) K_nu u^n, A_a = m_a/dt + gamma_a m_a, velocity nodes fixed at their boundary values
+// (set in u, v on entry), by Jacobi-preconditioned conjugate gradients. Without viscosity the
+// matrix is diagonal and one iteration solves it.
+void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Prediction& in,
+                                      std::vector<double>& u, std::vector<double>& v) {
+  const int N2 = mesh_.node_count();
+  const FlowState& n = s.previous_;
+  std::vector<char> fixed(N2, 0);
+  for (const auto& node : s.bc_.velocity_nodes) fixed[node.node] = 1;
+  const Vector K_diagonal = K_.diagonal();
+  for (int c = 0; c < 2; ++c) {
+    std::vector<double>& w = c == 0 ? u : v;
+    const std::vector<double>& w_n = c == 0 ? n.u : n.v;
+    const std::vector<double>& w_d = c == 0 ? s.u_departure_ : s.v_departure_;
+    const Vector K_w_n = K_ * Eigen::Map<const Vector>(w_n.data(), N2);
+    Vector b(N2), x(N2);
+    for (int a = 0; a < N2; ++a) {
+      b[a] = m_[a] * w_d[a] * in.inv_dt                  // (1)
+             - in.theta * in.g * (*in.G_eta)[2 * a + c]  // (3) implicit part at t^n
+             + (c == 0 ? in.loads->force[a].x() : in.loads->force[a].y())  // (4) (7)
+             - (1.0 - in.theta) * K_w_n[a];                                // (4)
+      x[a] = fixed[a] ? w[a] : w_n[a];
+    }
+    const auto apply = [&](const Vector& p, Vector& y) {
+      y.noalias() = in.theta * (K_ * p);  // (4)
+      y += in.A->cwiseProduct(p);         // (1) (5)
+    };
+    const auto precondition = [&](const Vector& r, Vector& z) {
+      z = r.cwiseQuotient(*in.A + in.theta * K_diagonal);
+    };
+    const int iterations =
+        conjugate_gradients(apply, precondition, fixed, b, x, 1e-10, max_cg_iterations);
+    if (iterations > max_cg_iterations)
+      throw_run_error("flow: the momentum predictor (M-21) did not converge in {} iterations",
+                      max_cg_iterations);
+    for (int a = 0; a < N2; ++a) w[a] = x[a];
+  }
+}
+
+Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vector& b) {
+  const auto factorise = [&] {
+    if (!factor_) factor_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
+    if (analysed_nonzeros_ != S.nonZeros()) {
+      factor_->analyzePattern(S);
+      analysed_nonzeros_ = S.nonZeros();
+    }
+    factor_->factorize(S);
+    if (factor_->info() != Eigen::Success)
+      throw_run_error("flow: the elevation system (M-22) is not positive definite (mesh {})",
+                      mesh_.source);
+    factor_age_ = 0;
+    ++factorisations_;
+  };
+  if (factor_age_ < 0) factorise();
+  const std::vector<char> none(b.size(), 0);
+  const auto apply = [&](const Vector& x, Vector& y) { y.noalias() = S * x; };
+  const auto precondition = [&](const Vector& r, Vector& z) { z = factor_->solve(r); };
+  Vector x = Vector::Zero(b.size());
+  int iterations =
+      conjugate_gradients(apply, precondition, none, b, x, cg_tolerance, max_reused_iterations);
+  if (iterations > max_reused_iterations) {  // the factor aged too far: a fresh one
+    elevation_iterations_ += iterations - 1;
+    factorise();
+    x.setZero();
+    iterations = conjugate_gradients(apply, precondition, none, b, x, cg_tolerance, 20);
+  } else {
+    ++factor_age_;
+  }
+  elevation_iterations_ += iterations;
+  return x;
+}
+
+StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
+  s.previous_ = s.state_;
+  const ShallowWaterSolver::Iteration it = s.time_step(dt);
+  const double th = it.theta, g = s.case_.flow.gravity;
+  const FlowState& n = s.previous_;
+  FlowState& next = s.state_;
+  const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count;
+  try {
+    s.set_boundary_velocities(it);  // velocity and discharge nodes at t^{n+1}, in state_
+    Loads loads;
+    assemble_momentum(s, it.t_source, loads);
+
+    // 1. Advection (M-20): the explicit slope and Coriolis carried to the departure points.
+    const Vector eta_n = Eigen::Map<const Vector>(n.eta.data(), N1);
+    const Vector G_eta = G_ * eta_n;  // [m^2]
+    const FlowConfig& flow = s.case_.flow;
+    const double f = flow.coriolis
+                         ? 2.0 * earth_rotation_rate * std::sin(flow.latitude_deg * pi / 180.0)
+                         : 0.0;  // [1/s]
+    std::vector<double> q_x(N2), q_y(N2);
+    for (int a = 0; a < N2; ++a) {
+      const Vec2 u_a(n.u[a], n.v[a]);
+      const Vec2 acceleration = -(1.0 - th) * g * Vec2(G_eta[2 * a], G_eta[2 * a + 1]) / m_[a] -
+                                f * Vec2(-u_a.y(), u_a.x());  // (3) (6), explicit parts
+      q_x[a] = u_a.x() + dt * acceleration.x();
+      q_y[a] = u_a.y() + dt * acceleration.y();
+    }
+    s.characteristics_->advect(n.u, n.v, dt, q_x, q_y, s.u_departure_, s.v_departure_);
+
+    // 2. Momentum predictor (M-21), viscosity and friction implicit.
+    Vector A(N2);  // [m^2/s] m_a/dt + gamma_a m_a
+    for (int a = 0; a < N2; ++a) A[a] = m_[a] / dt + loads.gamma_m[a];
+    predict_velocity(s, {th, g, 1.0 / dt, &G_eta, &A, &loads}, next.u, next.v);
+
+    // The constraint P_a of each node: free, fixed (velocity nodes), or u . normal = 0 (walls,
+    // and the tangent of elevation boundaries where water enters, from u^n).
+    // The tangent held at an elevation boundary (where water enters, which changes from step to
+    // step where eddies leave) is applied after the correction only, so that the matrix of
+    // (M-22) changes with H and gamma alone and its factor stays a good preconditioner.
+    std::vector<Mat2> P(N2, Mat2::Identity()), P_after(N2, Mat2::Identity());
+    for (const auto& node : s.bc_.velocity_nodes) P[node.node].setZero();
+    for (const SlipNode& slip : s.bc_.slip_nodes) {
+      const Mat2 tangent = Mat2::Identity() - slip.normal * slip.normal.transpose();
+      if (slip.outward.isZero())
+        P[slip.node] = tangent;  // wall
+      else if (slip.outward.dot(Vec2(n.u[slip.node], n.v[slip.node])) <= 0.0)
+        P_after[slip.node] = tangent;
+    }
+    std::vector<double> H(N2);
+    std::vector<Eigen::Triplet<double>> d;
+    d.reserve(4 * static_cast<size_t>(N2));
+    Vector flux(2 * N2);  // [m^2/s] H (theta P u~ + (1 - theta) u^n), by node
+    for (int a = 0; a < N2; ++a) {
+      H[a] = s.node_depth_of(n, a);
+      const bool fixed = P[a].isZero();
+      const Vec2 u_tilde =
+          fixed ? Vec2(next.u[a], next.v[a]) : Vec2(P[a] * Vec2(next.u[a], next.v[a]));
+      next.u[a] = u_tilde.x();
+      next.v[a] = u_tilde.y();
+      const Vec2 q = H[a] * (th * u_tilde + (1.0 - th) * Vec2(n.u[a], n.v[a]));  // (9)
+      flux[2 * a] = q.x();
+      flux[2 * a + 1] = q.y();
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) d.emplace_back(2 * a + i, 2 * a + j, H[a] / A[a] * P[a](i, j));
+    }
+
+    // 3. Elevation (M-22): the Schur complement, SPD.
+    SparseMatrix D(2 * N2, 2 * N2);
+    D.setFromTriplets(d.begin(), d.end());
+    const SparseMatrix DG = D * G_;
+    SparseMatrix S = G_.transpose() * DG;
+    S *= th * th * g;
+    S += M1_ * (1.0 / dt);                            // (8)
+    Vector b = loads.source + G_.transpose() * flux;  // (11) (9)
+    std::vector<double> open_flux(mesh_.group_names.size(), 0.0);
+    EdgeValues ev;
+    for (const auto& open : s.bc_.open_edges) {  // (10), the outflow, known
+      const auto& edge = mesh_.boundary[open.boundary_edge];
+      compute_edge_values(mesh_, edge, ev);
+      EdgeState es;
+      for (int m = 0; m < 3; ++m) {
+        const int node = ev.nodes[m];
+        es.z_b[m] = s.z_b_[node];
+        es.u_new[m] = Vec2(next.u[node], next.v[node]);
+        es.u_n[m] = Vec2(n.u[node], n.v[node]);
+        if (m < 2) es.eta_k[m] = es.eta_n[m] = n.eta[node];
+      }
+      const auto outflow = open_boundary_flux(th, ev, es);
+      for (int m = 0; m < 2; ++m) {
+        open_flux[edge.group] += outflow[m];
+        b[ev.nodes[m]] -= outflow[m];  // (10)
+      }
+    }
+    // Elevation boundaries: d_eta known there, eliminated symmetrically.
+    std::vector<char> dirichlet(N1, 0);
+    Vector d_eta = Vector::Zero(N1);
+    for (const auto& node : s.bc_.elevation_nodes) {
+      dirichlet[node.vertex] = 1;
+      d_eta[node.vertex] = flow.boundaries[node.condition].value(it.t_new) - n.eta[node.vertex];
+    }
+    SparseMatrix S_free = S;
+    Vector b_free = b;
+    for (int j = 0; j < N1; ++j)
+      for (SparseMatrix::InnerIterator entry(S_free, j); entry; ++entry) {
+        const int i = static_cast<int>(entry.row());
+        if (!dirichlet[i] && !dirichlet[j]) continue;
+        if (!dirichlet[i]) b_free[i] -= entry.value() * d_eta[j];
+        entry.valueRef() = i == j ? 1.0 : 0.0;
+      }
+    for (int i = 0; i < N1; ++i)
+      if (dirichlet[i]) b_free[i] = d_eta[i];
+    d_eta = solve_elevation(S_free, b_free);
+
+    // 4. Correction (M-23).
+    const Vector G_d_eta = G_ * d_eta;
+    for (int a = 0; a < N2; ++a) {
+      const Vec2 correction =
+          th * g / A[a] * (P[a] * Vec2(G_d_eta[2 * a], G_d_eta[2 * a + 1]));  // [m/s]
+      const Vec2 u_new = P_after[a] * Vec2(next.u[a] - correction.x(), next.v[a] - correction.y());
+      next.u[a] = u_new.x();
+      next.v[a] = u_new.y();
+    }
+    for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
+    next.time = it.t_new;
+    s.check_state(next, it.t_new);
+
+    // Water balance (water_balance.hpp): open boundaries (10), and the elevation boundaries'
+    // rows of (M-22) as assembled, S d_eta - b, the outflow through each such vertex.
+    const Vector residual = S * d_eta - b;  // [m^3/s]
+    WaterBalance& balance = s.balance_;
+    balance.group_rate = open_flux;
+    for (size_t k = 0; k < s.bc_.elevation_nodes.size(); ++k)
+      balance.group_rate[s.elevation_group_[k]] -= residual[s.bc_.elevation_nodes[k].vertex];
+  } catch (const RunError&) {
+    s.state_ = s.previous_;
+    throw;
+  }
+  s.accumulate_balance(it, dt);
+  s.history_ = true;
+  StepReport report;
+  report.iterations = 1;
+  return report;
+}
+
+}  // namespace flotsam

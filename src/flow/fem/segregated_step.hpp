@@ -1,0 +1,77 @@
+#pragma once
+// The segregated (projection) time step of the FEM engine, `flow.scheme: segregated`
+// (docs/model.md "The segregated step", (M-20)-(M-23)). Same unknowns and weak form as the coupled
+// step (element_assembly.hpp), theta-scheme, advection by characteristics; the coupled (u, eta)
+// system is replaced by a sequence of small ones:
+//
+//   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-(1-theta) g G eta^n) - f k x u^n  (M-20)
+//   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - theta g G eta^n
+//                    - (1-theta) K_nu u^n - T_nu(u^n) + F                     (M-21) per component
+//   3. elevation   (M_1/dt + theta^2 g G^T D G) d_eta = S - B + G^T H (theta u~ + (1-theta) u^n)
+//                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a)        (M-22), SPD
+//   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
+//
+// M_L is the lumped P2 mass (diagonal scaling, Hinton-Rock-Zienkiewicz: the consistent diagonal
+// scaled to the element's area; row sums would give the P2 vertices zero mass), G_ai =
+// (N_a, grad M_i) the surface slope (3) / continuity flux (9) operator, K_nu the scalar
+// viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
+// P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
+// velocity nodes), M_1 the P1 mass. The elevation system is solved by conjugate gradients
+// preconditioned with a CHOLMOD Cholesky factor of an earlier step's matrix (exact after a
+// refactorisation), refactorised when the iterations exceed max_reused_iterations.
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+#include <memory>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "mesh/mesh.hpp"
+
+namespace flotsam {
+
+class ShallowWaterSolver;
+struct StepReport;
+
+class SegregatedStep {
+ public:
+  /// The constant operators of the mesh: M_L, M_1, G, the pattern of K_nu.
+  explicit SegregatedStep(const ShallowWaterSolver& solver);
+  ~SegregatedStep();
+
+  /// Advances `solver` by dt [s] (its state, previous state, water balance). Throws RunError
+  /// (state left at the start of the step) as ShallowWaterSolver::step does.
+  StepReport step(ShallowWaterSolver& solver, double dt);
+  /// The next elevation solve factorises afresh (a restart must continue bit for bit).
+  void refactorise() { factor_age_ = -1; }
+
+  /// Conjugate-gradient iterations of the elevation solves so far, and factorisations.
+  long elevation_iterations() const { return elevation_iterations_; }
+  long factorisations() const { return factorisations_; }
+
+ private:
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+  struct Loads;
+  struct Prediction {              // what the momentum predictor (M-21) takes
+    double theta, g, inv_dt;       // [-], [m s^-2], [1/s]
+    const Eigen::VectorXd* G_eta;  // G eta^n [m^2], rows 2a + c
+    const Eigen::VectorXd* A;      // m_a/dt + gamma_a m_a [m^2/s]
+    const Loads* loads;
+  };
+  void assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads);
+  void predict_velocity(const ShallowWaterSolver& s, const Prediction& in, std::vector<double>& u,
+                        std::vector<double>& v);
+  Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b);
+
+  const Mesh& mesh_;
+  std::vector<double> m_;        // [m^2] lumped P2 mass per node
+  SparseMatrix G_;               // (2 N2) x N1, rows 2a + c: (N_a, d M_i / d x_c) [m]
+  SparseMatrix M1_;              // P1 mass [m^2]
+  SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
+  std::vector<int> k_position_;  // per element 36 positions in K_'s values
+  std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
+  Eigen::Index analysed_nonzeros_ = -1;
+  int factor_age_ = -1;  // steps since the factorisation; -1: none
+  long elevation_iterations_ = 0, factorisations_ = 0;
+};
+
+}  // namespace flotsam

@@ -1,0 +1,80 @@
+// Verifies that a free vortex in a closed, frictionless, inviscid basin keeps its angular momentum
+// (issue 19 item 2): nothing exerts a torque on it but the walls' pressure, which a vortex far
+// from them (radius 30 m in a 200 m square basin) in cyclostrophic balance does not feel, so
+//     L = integral of H (x - x_c) x u dA     [m^5/s]
+// is exactly constant, and the swirl
+//     u_theta = Omega r exp(-r^2 / R^2),  g d eta / dr = u_theta^2 / r
+//     =>  eta = H_0 - Omega^2 R^2 / (4 g) exp(-2 r^2 / R^2)
+// is an exact steady state of (M-1) with nu = 0. Tolerance: |L(1000 s) / L(0) - 1| <= 0.5 %
+// at 0.5 m/s (Froude number 0.05), both steps.
+// DISABLED: neither step meets it yet (2026-11-24: coupled +12.7 %, segregated -13.1 % over
+// 1,000 s; docs/validation.md "Free vortex"); run it with --gtest_also_run_disabled_tests.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "../support/flow_schemes.hpp"
+#include "flow/fem/element_values.hpp"
+#include "flow/fem/shallow_water_solver.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double L = 200.0, H0 = 10.0;  // [m] basin side, still-water depth (flat bed at 0)
+constexpr double R = 30.0, U = 0.5;     // [m] vortex radius, [m/s] its speed scale
+const Vec2 centre(0.5 * L, 0.5 * L);
+
+double angular_momentum(const ShallowWaterSolver& solver) {
+  const Mesh& mesh = solver.mesh();
+  double total = 0.0;  // [m^5/s]
+  ElementValues ev;
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    compute_element_values(mesh, e, ev, false);
+    const auto& el = mesh.elements[e];
+    for (int q = 0; q < triangle_point_count; ++q) {
+      Vec2 u = Vec2::Zero();
+      double eta = 0.0;
+      for (int b = 0; b < 6; ++b) u += ev.N2[q][b] * Vec2(solver.u()[el[b]], solver.v()[el[b]]);
+      for (int j = 0; j < 3; ++j) eta += ev.N1[q][j] * solver.eta()[el[j]];
+      const Vec2 r = ev.x[q] - centre;
+      total += eta * (r.x() * u.y() - r.y() * u.x()) * ev.JxW[q];
+    }
+  }
+  return total;
+}
+
+class FreeVortex : public testing::TestWithParam<FlowScheme> {};
+
+TEST_P(FreeVortex, DISABLED_KeepsAngularMomentumOver1000Seconds) {
+  const Mesh mesh = make_rectangle_mesh({.length = L, .width = L, .nx = 20, .ny = 20});
+  Case c;
+  c.flow.scheme = GetParam();
+  c.flow.viscosity = 0.0;
+  c.flow.initial_eta_start = c.flow.initial_eta_end = H0;  // walls all round
+  ShallowWaterSolver solver(mesh, c);
+  solver.initialize();
+  FlowState s = solver.state();
+  const double g = c.flow.gravity, Omega = U / R;  // [1/s]
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const Vec2 r = mesh.nodes[i] - centre;
+    const double swirl = Omega * std::exp(-r.squaredNorm() / (R * R));  // [1/s]
+    s.u[i] = -swirl * r.y();
+    s.v[i] = swirl * r.x();
+    if (i < mesh.vertex_count)
+      s.eta[i] = H0 - Omega * Omega * R * R / (4 * g) * std::exp(-2 * r.squaredNorm() / (R * R));
+  }
+  solver.set_state(s);
+  const double L0 = angular_momentum(solver);
+  for (int n = 0; n < 500; ++n) solver.step(2.0);  // [s] gravity-wave Courant 2 on 10 m cells
+  const double change = angular_momentum(solver) / L0 - 1.0;
+  std::printf("free vortex, %s: L(1000 s) / L(0) - 1 = %.3e\n",
+              test::scheme_name(GetParam()).c_str(), change);
+  EXPECT_LE(std::abs(change), 5e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(FlowSchemes, FreeVortex, test::both_flow_schemes, test::flow_scheme_name);
+
+}  // namespace
+}  // namespace flotsam
