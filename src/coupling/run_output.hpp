@@ -41,11 +41,13 @@ class RunOutput {
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
             const RunLayout& layout, bool overwrite, const std::string& case_file);
 
-  /// Continues the output of a run in `directory` (a restart): the indexes list again the
-  /// `times` already written, the tables get their rows appended, and the next output is
+  /// Continues the output of a run in `directory` (a restart from the checkpoint at
+  /// `resume_time` [s]): the indexes list again the `times` already written, the tables are
+  /// rewound to resume_time (CsvResume) and get their rows appended, and the next output is
   /// number times.size().
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const RunLayout& layout, const std::vector<double>& times, bool with_bodies);
+            const RunLayout& layout, const std::vector<double>& times, bool with_bodies,
+            double resume_time);
 
   /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
   /// stays at its steady state's).
@@ -78,7 +80,7 @@ class RunOutput {
   PvdWriter flow_index_, body_index_;
   std::vector<double> times_;  // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;
-  bool append_ = false;  // tables continue files of an earlier run (restart)
+  std::optional<CsvResume> resume_;  // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
 };

@@ -21,6 +21,7 @@ Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
 
 void Simulation::initialize() {
   check_case_against_mesh(case_, mesh_.group_names);
+  const std::filesystem::path checkpoint = options_.restart ? restart_checkpoint() : "";
   flow_ = make_flow_engine(mesh_, case_);
   flow_->initialize();
   if (case_.time.mode == CouplingMode::frozen) flow_->settle(case_.time);
@@ -58,19 +59,13 @@ void Simulation::initialize() {
   }
   next_output_ = time_;
   if (options_.restart) {
-    const auto checkpoint = output_directory() / "checkpoint.bin";
-    if (!std::filesystem::exists(checkpoint))
-      throw_input_error(
-          "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
-          "run without --restart to start afresh",
-          output_directory().string());
     read_checkpoint(checkpoint.string());
     if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
-    open_probes(true);
+    open_probes(CsvResume{time_});
     return;
   }
   open_output(nullptr);
-  open_probes(false);
+  open_probes(std::nullopt);
   if (probes_) probes_->write(time_);
   write_output_if_due(false);
 }
@@ -83,11 +78,25 @@ RunLayout Simulation::run_layout() const {
   return layout;
 }
 
-void Simulation::open_probes(bool append) {
+void Simulation::open_probes(std::optional<CsvResume> resume) {
   if (!options_.write_output || case_.output.probes.empty()) return;
   probes_ =
       std::make_unique<ProbeWriter>((output_directory() / (case_.name + "_probes.csv")).string(),
-                                    case_.output.probes, flow_->field(), case_.file, append);
+                                    case_.output.probes, flow_->field(), case_.file, resume);
+}
+
+std::filesystem::path Simulation::restart_checkpoint() const {
+  const auto checkpoint = output_directory() / "checkpoint.bin";
+  if (!std::filesystem::exists(checkpoint))
+    throw_input_error(
+        "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
+        "run without --restart to start afresh",
+        output_directory().string());
+  check_restart_case(checkpoint.string());
+  // Files a stopped run was writing when it stopped (complete files were renamed).
+  for (const auto& entry : std::filesystem::directory_iterator(output_directory()))
+    if (entry.path().extension() == ".part") std::filesystem::remove(entry.path());
+  return checkpoint;
 }
 
 std::filesystem::path Simulation::output_directory() const {
@@ -203,11 +212,12 @@ void Simulation::write_output_if_due(bool force) {
 
 void Simulation::open_output(const std::vector<double>* output_times) {
   if (!options_.write_output) return;
-  output_ = output_times ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_,
-                                                       run_layout(), *output_times, has_bodies_)
-                         : std::make_unique<RunOutput>(
-                               output_directory(), case_.name, mesh_, run_layout(),
-                               options_.overwrite || case_.output.overwrite, case_.file);
+  output_ =
+      output_times
+          ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                        *output_times, has_bodies_, time_)
+          : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                        options_.overwrite || case_.output.overwrite, case_.file);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/case_digest.hpp"
 #include "io/case_sections.hpp"
 #include "io/yaml_reader.hpp"
 
@@ -99,7 +100,7 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder,
   }
   if (kind == "file") {
     const YamlValue file = m.get("file");
-    const std::filesystem::path path = case_path(file.text(), case_folder);
+    const std::filesystem::path path = file.input_path(case_folder.string());
     if (!std::filesystem::is_regular_file(path)) {
       file.fail(
           fmt::format("no such mesh file '{}' (a relative path is read from the case "
@@ -159,7 +160,7 @@ BedConfig read_bed(const YamlMap& m, const std::filesystem::path& case_folder) {
     bed.kind = BedConfig::Kind::raster;
     bed.origin = raster->origin();
     bed.raster = std::make_shared<const Raster>(
-        Raster::read(case_path(raster->text(), case_folder).string(), bed.origin));
+        Raster::read(raster->input_path(case_folder.string()), bed.origin));
     if (const auto edit = m.find("expression")) bed.expression = edit->expression(true);
     return bed;
   }
@@ -352,6 +353,8 @@ Case parse_case(const std::string& text, const std::string& file_name) {
         "the flood envelopes and their rasters come from the finite-volume engine; set "
         "flow.engine: fv");
   document.check_no_unknown_keys();
+  for (const auto& [key, path] : document.input_files()) c.input_files.push_back({key, path});
+  c.settings = case_settings(document.node(), c.input_files);
   return c;
 }
 

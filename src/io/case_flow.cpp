@@ -61,7 +61,7 @@ RainConfig read_rain(const YamlValue& value, const std::filesystem::path& case_f
   if (const auto raster = m.find("raster")) {
     rain.raster_origin = raster->origin();
     rain.raster = std::make_shared<const Raster>(
-        Raster::read(case_path(raster->text(), case_folder).string(), rain.raster_origin));
+        Raster::read(raster->input_path(case_folder.string()), rain.raster_origin));
     if (!rain.raster->grid().crs_wkt.empty())
       geodata.push_back(
           {rain.raster->grid().crs_wkt, fmt::format("the rain raster '{}'", rain.raster->path())});

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "core/error.hpp"
 
@@ -323,6 +324,13 @@ std::vector<std::pair<std::string, YamlValue>> YamlMap::entries() const {
 }
 
 // ---- YamlDocument -------------------------------------------------------------------------
+
+std::string YamlValue::input_path(const std::string& case_folder) const {
+  std::filesystem::path file = text();
+  if (file.is_relative()) file = (std::filesystem::path(case_folder) / file).lexically_normal();
+  document_->input_files_.emplace_back(path_, file.string());
+  return file.string();
+}
 
 YamlDocument::YamlDocument(const std::string& text, std::string file_name)
     : file_name_(std::move(file_name)) {
