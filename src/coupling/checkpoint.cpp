@@ -106,7 +106,7 @@ void Simulation::write_checkpoint(const std::string& path) const {
   w.close();
 }
 
-void Simulation::check_restart_case(const std::string& path) const {
+bool Simulation::check_restart_case(const std::string& path) const {
   ArchiveReader r(path);
   const auto changes = compare_settings(parse_settings(r.read_text("run.case")), run_settings());
   std::vector<SettingChange> run_changes, output_changes;
@@ -125,9 +125,10 @@ void Simulation::check_restart_case(const std::string& path) const {
         "cannot restart from '{}': the output settings of {} differ from those the run started "
         "with:{}\nPass --accept-output-changes to continue with the new ones, or put them back.",
         path, case_name, describe_changes(output_changes));
-  if (!output_changes.empty())
-    spdlog::warn("restart: continuing with changed output settings:{}",
-                 describe_changes(output_changes));
+  if (output_changes.empty()) return false;
+  spdlog::warn("restart: continuing with changed output settings:{}",
+               describe_changes(output_changes));
+  return true;
 }
 
 void Simulation::read_checkpoint(const std::string& path) {

@@ -21,7 +21,9 @@ Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
 
 void Simulation::initialize() {
   check_case_against_mesh(case_, mesh_.group_names);
-  const std::filesystem::path checkpoint = options_.restart ? restart_checkpoint() : "";
+  bool output_changed = false;
+  const std::filesystem::path checkpoint =
+      options_.restart ? restart_checkpoint(output_changed) : "";
   flow_ = make_flow_engine(mesh_, case_);
   flow_->initialize();
   if (case_.time.mode == CouplingMode::frozen) flow_->settle(case_.time);
@@ -60,6 +62,8 @@ void Simulation::initialize() {
   next_output_ = time_;
   if (options_.restart) {
     read_checkpoint(checkpoint.string());
+    // The checkpoint's time was an output: a new interval counts from it.
+    if (output_changed) next_output_ = time_ + case_.output.interval;
     if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
     open_probes(CsvResume{time_});
     return;
@@ -85,14 +89,14 @@ void Simulation::open_probes(std::optional<CsvResume> resume) {
                                     case_.output.probes, flow_->field(), case_.file, resume);
 }
 
-std::filesystem::path Simulation::restart_checkpoint() const {
+std::filesystem::path Simulation::restart_checkpoint(bool& output_changed) const {
   const auto checkpoint = output_directory() / "checkpoint.bin";
   if (!std::filesystem::exists(checkpoint))
     throw_input_error(
         "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
         "run without --restart to start afresh",
         output_directory().string());
-  check_restart_case(checkpoint.string());
+  output_changed = check_restart_case(checkpoint.string());
   // Files a stopped run was writing when it stopped (complete files were renamed).
   for (const auto& entry : std::filesystem::directory_iterator(output_directory()))
     if (entry.path().extension() == ".part") std::filesystem::remove(entry.path());

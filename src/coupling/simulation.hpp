@@ -89,12 +89,13 @@ class Simulation {
   /// The case's settings and the mesh's checksum, which a restart must find unchanged.
   std::vector<CaseSetting> run_settings() const;
   /// Refuses a restart whose case differs from the checkpoint's (io/case_digest.hpp), naming
-  /// the keys that changed.
-  void check_restart_case(const std::string& path) const;
+  /// the keys that changed; true when output settings changed (and that was accepted).
+  bool check_restart_case(const std::string& path) const;
   /// Refuses a restored state that is not physical (non-finite values, bodies far outside).
   void check_restored_state(const std::string& path, const std::vector<double>& output_times) const;
-  /// Restarts only: the checkpoint, with the case checked against it.
-  std::filesystem::path restart_checkpoint() const;
+  /// Restarts only: the checkpoint, with the case checked against it (`output_changed` as
+  /// check_restart_case returns).
+  std::filesystem::path restart_checkpoint(bool& output_changed) const;
 
   Case case_;
   Mesh mesh_;
