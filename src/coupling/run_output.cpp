@@ -14,8 +14,8 @@ namespace flotsam {
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const RunLayout& layout, bool overwrite,
-                     const std::string& case_file)
-    : directory_(prepare_output_directory(directory.string(), overwrite, case_file)),
+                     const std::string& case_file, const std::vector<ProtectedInput>& inputs)
+    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs)),
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),

@@ -23,6 +23,7 @@
 #include "coupling/jam_statistics.hpp"
 #include "flow/flow_engine.hpp"
 #include "io/csv_writer.hpp"
+#include "io/output_directory.hpp"
 #include "io/pvd_writer.hpp"
 
 namespace flotsam {
@@ -39,7 +40,8 @@ class RunOutput {
  public:
   /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp and run.bin.
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const RunLayout& layout, bool overwrite, const std::string& case_file);
+            const RunLayout& layout, bool overwrite, const std::string& case_file,
+            const std::vector<ProtectedInput>& inputs);
 
   /// Continues the output of a run in `directory` (a restart from the checkpoint at
   /// `resume_time` [s]): the indexes list again the `times` already written, the tables are

@@ -9,6 +9,7 @@
 #include "bodies/outflow.hpp"
 #include "core/error.hpp"
 #include "coupling/flow_engines.hpp"
+#include "coupling/placement_overlap.hpp"
 #include "coupling/progress.hpp"
 #include "io/case_file.hpp"
 
@@ -41,8 +42,12 @@ void Simulation::initialize() {
   if (has_bodies_) {
     bodies_.water_density = case_.flow.water_density;
     const PlacementCheck check{case_.file};
-    if (!options_.restart)  // a restart takes its bodies from the checkpoint
+    if (!options_.restart) {  // a restart takes its bodies from the checkpoint
       add_explicit_bodies(bodies_, case_.bodies.bodies, flow_->field(), time_, check);
+      const double allowed = 0.01;  // [m] touching bodies are not worth a word
+      if (const auto overlaps = placement_overlaps(bodies_, allowed); !overlaps.empty())
+        spdlog::warn("{}", describe_overlaps(bodies_, overlaps, case_.file));
+    }
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
     releaser_->check_inside(flow_->field(), time_);
     integrator_ =
@@ -216,12 +221,14 @@ void Simulation::write_output_if_due(bool force) {
 
 void Simulation::open_output(const std::vector<double>* output_times) {
   if (!options_.write_output) return;
-  output_ =
-      output_times
-          ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
-                                        *output_times, has_bodies_, time_)
-          : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
-                                        options_.overwrite || case_.output.overwrite, case_.file);
+  std::vector<ProtectedInput> inputs;  // never deleted by --overwrite
+  for (const InputFile& input : case_.input_files) inputs.emplace_back(input.key, input.path);
+  output_ = output_times
+                ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                              *output_times, has_bodies_, time_)
+                : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                              options_.overwrite || case_.output.overwrite,
+                                              case_.file, inputs);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;
