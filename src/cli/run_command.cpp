@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "coupling/simulation.hpp"
+#include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 
@@ -51,6 +52,10 @@ void add_run_command(CLI::App& app) {
   cmd->callback([options] {
     Case c = read_case(options->case_file);
     if (options->end > 0) c.time.end = options->end;
+    const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
+    check_estimate(c, estimate);
+    if (is_large(estimate))
+      fmt::print(stderr, "flotsam: a large run: {}\n", describe_estimate(estimate));
     Mesh mesh = generate_mesh(c.mesh);
     RunOptions run{options->output, options->overwrite, true,
                    !options->quiet, options->restart,   options->accept_output_changes};

@@ -346,6 +346,14 @@ Case parse_case(const std::string& text, const std::string& file_name) {
                      case_folder, geodata);
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
+  const bool has_bodies = !c.bodies.bodies.empty() || !c.bodies.releases.empty();
+  if (has_bodies && c.bodies.physics.drag_law == DragLaw::ganser && c.flow.viscosity <= 0.0) {
+    const YamlMap flow = root.get("flow").map();
+    (flow.has("viscosity") ? flow.get("viscosity") : flow.get("reynolds"))
+        .fail(
+            "the Ganser drag of the bodies needs a viscosity > 0 (its Reynolds number divides by "
+            "it); give the water's, 1e-6 m^2/s, or set bodies.physics.drag_law: constant");
+  }
   c.output = read_output(root.map("output"));
   c.crs_wkt = case_coordinate_system(geodata, root);
   if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)

@@ -118,6 +118,9 @@ double YamlValue::number(Range range) const {
   const bool ok = node_.IsScalar() && node_.Tag() != "!" && YAML::convert<double>::decode(node_, x);
   if (!ok) fail(fmt::format("expected {}, got {}", range.describe(), kind_found()));
   if (!std::isfinite(x)) fail(fmt::format("expected a finite number, got {}", kind_found()));
+  if (std::abs(x) > Range::largest)
+    fail(fmt::format("expected {} of magnitude at most {:g} (no key needs more), got {}",
+                     range.describe(), Range::largest, node_.Scalar()));
   if (!range.contains(x))
     fail(fmt::format("expected {}, got {}", range.describe(), node_.Scalar()));
   return x;

@@ -39,6 +39,11 @@ struct Range {
   static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity()}; }
   static Range at_least(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
   static Range between(double lo, double hi) { return {lo, hi}; }
+  static Range up_to(double hi) { return {0.0, hi, true, false}; }  // (0, hi]
+
+  /// No number in a case exceeds this magnitude (docs/case-format.md "Ranges"): larger ones
+  /// are typos of an exponent, and would overflow the run's arithmetic.
+  static constexpr double largest = 1e9;
 
   bool contains(double x) const;
   /// "a number > 0", "a number in [0, 1]", "a number".
