@@ -2,9 +2,16 @@
 #   make demo   build and run the paper's bridge case into out/
 #   make test   build and run the whole test suite (CTest)
 #   make bench  build and run the benchmarks (figures go to docs/performance.md)
+#   make test-fuzz  fuzz the case and mesh readers for FUZZ_SECONDS each (libFuzzer, clang)
 
 BUILD     ?= build
 SAN_BUILD ?= build-sanitize
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+# The mesh reader's target is built but not run by default: Debian 12's Gmsh 4.8 crashes inside
+# its own MSH 4 parser on some damaged files (tests/fuzz/gmsh_crashes); FUZZ_TARGETS="case mesh"
+# runs it too.
+FUZZ_TARGETS ?= case
 JOBS      ?= $(shell nproc)
 CI        ?=
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -13,12 +20,12 @@ PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-f
             libeigen3-dev libsuitesparse-dev libgmsh-dev libyaml-cpp-dev libcli11-dev \
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
             libmuparser-dev libgdal-dev libopenblas0-openmp time python3-gdal python3-numpy \
-            libopenmpi-dev openmpi-bin
+            libopenmpi-dev openmpi-bin valgrind clang libclang-rt-14-dev
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
                $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
 
-.PHONY: all deps build test test-sanitize test-slow demo bench format format-check clean
+.PHONY: all deps build test test-sanitize test-slow test-fuzz demo bench format format-check clean
 
 all: build
 
@@ -48,6 +55,21 @@ test-sanitize: deps
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	LSAN_OPTIONS=suppressions=$(CURDIR)/cmake/lsan.supp \
 	    ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
+
+# Fuzzing (tests/fuzz): the case reader and the mesh reader under libFuzzer and AddressSanitizer,
+# FUZZ_SECONDS each, mutating the corpus in tests/fuzz/corpus; new inputs go to
+# $(FUZZ_BUILD)/corpus, and an input that crashes is saved as $(FUZZ_BUILD)/crash-* (add it to
+# the corpus once fixed).
+test-fuzz: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_case_reader fuzz_mesh_reader
+	@for t in $(FUZZ_TARGETS); do mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
+	    echo "== fuzzing the $$t reader for $(FUZZ_SECONDS) s"; \
+	    ASAN_OPTIONS=detect_leaks=0 $(FUZZ_BUILD)/tests/fuzz/fuzz_$${t}_reader \
+	    $(FUZZ_BUILD)/corpus/$$t tests/fuzz/corpus/$$t -max_total_time=$(FUZZ_SECONDS) \
+	    -timeout=20 -rss_limit_mb=4096 -artifact_prefix=$(FUZZ_BUILD)/ -print_final_stats=1 \
+	    || exit 1; done
 
 # The paper's bridge case, run and drawn into out/bridge_piers/. The demo replaces its own
 # earlier results there (--overwrite); nothing else in out/ is touched.
@@ -100,4 +122,4 @@ format-check: deps
 	find src tests bench -name '*.[ch]pp' | xargs clang-format --dry-run -Werror
 
 clean:
-	rm -rf $(BUILD) $(SAN_BUILD)
+	rm -rf $(BUILD) $(SAN_BUILD) $(FUZZ_BUILD)

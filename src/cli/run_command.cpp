@@ -2,8 +2,12 @@
 // print the end-of-run summary.
 #include <fmt/core.h>
 
+#include <cmath>
+#include <cstdlib>
+
 #include "cli/commands.hpp"
 #include "coupling/simulation.hpp"
+#include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 
@@ -12,7 +16,7 @@ namespace flotsam::cli {
 void add_run_command(CLI::App& app) {
   struct Options {
     std::string case_file, output;
-    bool overwrite = false, quiet = false, restart = false;
+    bool overwrite = false, quiet = false, restart = false, accept_output_changes = false;
     double end = -1.0;
   };
   auto options = std::make_shared<Options>();
@@ -29,17 +33,32 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--overwrite", options->overwrite,
                 "replace the results of an earlier run in the output folder");
   cmd->add_option("--end", options->end, "end time [s], instead of the case's time.end")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {  // CLI::PositiveNumber lets "nan" through
+            const double t = std::strtod(text.c_str(), nullptr);
+            return std::isfinite(t) && t > 0.0 ? std::string()
+                                               : "expected a finite time > 0 [s], got " + text;
+          },
+          "TIME > 0"));
   cmd->add_flag("-q,--quiet", options->quiet, "no progress line");
   cmd->add_flag("--restart", options->restart,
                 "continue the run in the output folder from its last output (checkpoint.bin); "
                 "with --end, to a later end time")
       ->excludes("--overwrite");
+  cmd->add_flag("--accept-output-changes", options->accept_output_changes,
+                "with --restart: continue although output.interval, output.probe_interval, "
+                "output.rasters or output.wet_depth changed (any other change is refused)")
+      ->needs("--restart");
   cmd->callback([options] {
     Case c = read_case(options->case_file);
     if (options->end > 0) c.time.end = options->end;
+    const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
+    check_estimate(c, estimate);
+    if (is_large(estimate))
+      fmt::print(stderr, "flotsam: a large run: {}\n", describe_estimate(estimate));
     Mesh mesh = generate_mesh(c.mesh);
-    RunOptions run{options->output, options->overwrite, true, !options->quiet, options->restart};
+    RunOptions run{options->output, options->overwrite, true,
+                   !options->quiet, options->restart,   options->accept_output_changes};
     Simulation simulation(std::move(c), std::move(mesh), run);
     simulation.run();
     fmt::print("{}", simulation.summary());

@@ -359,8 +359,8 @@ std::vector<std::string> JamStatisticsWriter::columns(const JamGeometry& geometr
 }
 
 JamStatisticsWriter::JamStatisticsWriter(const std::string& path, const JamGeometry& geometry,
-                                         bool with_backwater, bool append)
-    : csv_(path, columns(geometry, with_backwater), append),
+                                         bool with_backwater, std::optional<CsvResume> resume)
+    : csv_(path, columns(geometry, with_backwater), resume),
       with_backwater_(with_backwater),
       bridge_count_(geometry.bridges.size()) {}
 

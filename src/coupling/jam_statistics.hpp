@@ -122,9 +122,9 @@ Vec2 footprint_half_extent(const BodySet& bodies, int i);
 /// are there only when the run has a reference flow without bodies (`with_backwater`).
 class JamStatisticsWriter {
  public:
-  /// `append`: continue the file of a restarted run (no header).
+  /// `resume`: continue the file of a restarted run from its checkpoint's time (CsvResume).
   JamStatisticsWriter(const std::string& path, const JamGeometry& geometry, bool with_backwater,
-                      bool append = false);
+                      std::optional<CsvResume> resume = std::nullopt);
 
   /// One row at time t [s]; `backwater_rise` [m] has one value per bridge when the writer was
   /// made with_backwater (else it must be empty): std::invalid_argument otherwise.

@@ -14,8 +14,8 @@ namespace flotsam {
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const RunLayout& layout, bool overwrite,
-                     const std::string& case_file)
-    : directory_(prepare_output_directory(directory.string(), overwrite, case_file)),
+                     const std::string& case_file, const std::vector<ProtectedInput>& inputs)
+    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs)),
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
@@ -48,7 +48,7 @@ std::vector<std::string> RunOutput::open_group_names(const Mesh& mesh) const {
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const RunLayout& layout, const std::vector<double>& times,
-                     bool with_bodies)
+                     bool with_bodies, double resume_time)
     : directory_(directory),
       name_(name),
       open_group_(layout.open_group),
@@ -56,13 +56,13 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
       flow_index_((directory_ / (name + ".pvd")).string()),
       body_index_((directory_ / (name + "_bodies.pvd")).string()),
       times_(times),
-      append_(true) {
+      resume_(CsvResume{resume_time}) {
   for (std::size_t k = 0; k < times_.size(); ++k) {
     flow_index_.add(times_[k], fmt::format("flow_{:06d}.vtu", k));
     if (with_bodies) body_index_.add(times_[k], fmt::format("bodies_{:06d}.vtp", k));
   }
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
-                                         balance_columns(mesh), true);
+                                         balance_columns(mesh), resume_);
 }
 
 void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
@@ -104,7 +104,7 @@ void RunOutput::write_bodies(const BodySet& bodies, double t) {
         (directory_ / (name_ + "_bodies.csv")).string(),
         std::vector<std::string>{"t [s]", "id", "x [m]", "y [m]", "angle [rad]", "u [m/s]",
                                  "v [m/s]", "omega [rad/s]", "state (0 floating 1 grounded)"},
-        append_);
+        resume_);
   for (int i = 0; i < bodies.size(); ++i)
     if (bodies.state[i] != BodyState::gone)
       trajectories_->row({t, static_cast<double>(bodies.id[i]), bodies.position[i].x(),
@@ -121,7 +121,7 @@ void RunOutput::write_jams(double t, const JamStatistics& stats, const JamGeomet
                            const std::vector<double>& rise, bool with_backwater) {
   if (!jams_)
     jams_ = std::make_unique<JamStatisticsWriter>((directory_ / (name_ + "_jams.csv")).string(),
-                                                  geometry, with_backwater, append_);
+                                                  geometry, with_backwater, resume_);
   jams_->write(t, stats, rise);
 }
 

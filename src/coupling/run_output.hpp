@@ -23,6 +23,7 @@
 #include "coupling/jam_statistics.hpp"
 #include "flow/flow_engine.hpp"
 #include "io/csv_writer.hpp"
+#include "io/output_directory.hpp"
 #include "io/pvd_writer.hpp"
 
 namespace flotsam {
@@ -39,13 +40,16 @@ class RunOutput {
  public:
   /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp and run.bin.
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const RunLayout& layout, bool overwrite, const std::string& case_file);
+            const RunLayout& layout, bool overwrite, const std::string& case_file,
+            const std::vector<ProtectedInput>& inputs);
 
-  /// Continues the output of a run in `directory` (a restart): the indexes list again the
-  /// `times` already written, the tables get their rows appended, and the next output is
+  /// Continues the output of a run in `directory` (a restart from the checkpoint at
+  /// `resume_time` [s]): the indexes list again the `times` already written, the tables are
+  /// rewound to resume_time (CsvResume) and get their rows appended, and the next output is
   /// number times.size().
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
-            const RunLayout& layout, const std::vector<double>& times, bool with_bodies);
+            const RunLayout& layout, const std::vector<double>& times, bool with_bodies,
+            double resume_time);
 
   /// Writes the next output, at the run's time t [s] (in frozen mode the flow's own clock
   /// stays at its steady state's).
@@ -78,7 +82,7 @@ class RunOutput {
   PvdWriter flow_index_, body_index_;
   std::vector<double> times_;  // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;
-  bool append_ = false;  // tables continue files of an earlier run (restart)
+  std::optional<CsvResume> resume_;  // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
 };

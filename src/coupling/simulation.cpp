@@ -9,6 +9,7 @@
 #include "bodies/outflow.hpp"
 #include "core/error.hpp"
 #include "coupling/flow_engines.hpp"
+#include "coupling/placement_overlap.hpp"
 #include "coupling/progress.hpp"
 #include "io/case_file.hpp"
 
@@ -21,6 +22,9 @@ Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
 
 void Simulation::initialize() {
   check_case_against_mesh(case_, mesh_.group_names);
+  bool output_changed = false;
+  const std::filesystem::path checkpoint =
+      options_.restart ? restart_checkpoint(output_changed) : "";
   flow_ = make_flow_engine(mesh_, case_);
   flow_->initialize();
   if (case_.time.mode == CouplingMode::frozen) flow_->settle(case_.time);
@@ -38,8 +42,12 @@ void Simulation::initialize() {
   if (has_bodies_) {
     bodies_.water_density = case_.flow.water_density;
     const PlacementCheck check{case_.file};
-    if (!options_.restart)  // a restart takes its bodies from the checkpoint
+    if (!options_.restart) {  // a restart takes its bodies from the checkpoint
       add_explicit_bodies(bodies_, case_.bodies.bodies, flow_->field(), time_, check);
+      const double allowed = 0.01;  // [m] touching bodies are not worth a word
+      if (const auto overlaps = placement_overlaps(bodies_, allowed); !overlaps.empty())
+        spdlog::warn("{}", describe_overlaps(bodies_, overlaps, case_.file));
+    }
     releaser_ = std::make_unique<Releaser>(case_.bodies.releases, check);
     releaser_->check_inside(flow_->field(), time_);
     integrator_ =
@@ -58,19 +66,15 @@ void Simulation::initialize() {
   }
   next_output_ = time_;
   if (options_.restart) {
-    const auto checkpoint = output_directory() / "checkpoint.bin";
-    if (!std::filesystem::exists(checkpoint))
-      throw_input_error(
-          "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
-          "run without --restart to start afresh",
-          output_directory().string());
     read_checkpoint(checkpoint.string());
+    // The checkpoint's time was an output: a new interval counts from it.
+    if (output_changed) next_output_ = time_ + case_.output.interval;
     if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
-    open_probes(true);
+    open_probes(CsvResume{time_});
     return;
   }
   open_output(nullptr);
-  open_probes(false);
+  open_probes(std::nullopt);
   if (probes_) probes_->write(time_);
   write_output_if_due(false);
 }
@@ -83,11 +87,25 @@ RunLayout Simulation::run_layout() const {
   return layout;
 }
 
-void Simulation::open_probes(bool append) {
+void Simulation::open_probes(std::optional<CsvResume> resume) {
   if (!options_.write_output || case_.output.probes.empty()) return;
   probes_ =
       std::make_unique<ProbeWriter>((output_directory() / (case_.name + "_probes.csv")).string(),
-                                    case_.output.probes, flow_->field(), case_.file, append);
+                                    case_.output.probes, flow_->field(), case_.file, resume);
+}
+
+std::filesystem::path Simulation::restart_checkpoint(bool& output_changed) const {
+  const auto checkpoint = output_directory() / "checkpoint.bin";
+  if (!std::filesystem::exists(checkpoint))
+    throw_input_error(
+        "cannot restart: '{}' holds no checkpoint.bin (a run writes one at every output); "
+        "run without --restart to start afresh",
+        output_directory().string());
+  output_changed = check_restart_case(checkpoint.string());
+  // Files a stopped run was writing when it stopped (complete files were renamed).
+  for (const auto& entry : std::filesystem::directory_iterator(output_directory()))
+    if (entry.path().extension() == ".part") std::filesystem::remove(entry.path());
+  return checkpoint;
 }
 
 std::filesystem::path Simulation::output_directory() const {
@@ -203,11 +221,14 @@ void Simulation::write_output_if_due(bool force) {
 
 void Simulation::open_output(const std::vector<double>* output_times) {
   if (!options_.write_output) return;
-  output_ = output_times ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_,
-                                                       run_layout(), *output_times, has_bodies_)
-                         : std::make_unique<RunOutput>(
-                               output_directory(), case_.name, mesh_, run_layout(),
-                               options_.overwrite || case_.output.overwrite, case_.file);
+  std::vector<ProtectedInput> inputs;  // never deleted by --overwrite
+  for (const InputFile& input : case_.input_files) inputs.emplace_back(input.key, input.path);
+  output_ = output_times
+                ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                              *output_times, has_bodies_, time_)
+                : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                              options_.overwrite || case_.output.overwrite,
+                                              case_.file, inputs);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;

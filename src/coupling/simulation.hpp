@@ -36,6 +36,8 @@ struct RunOptions {
   bool write_output = true;                // false: compute only (tests, benchmarks)
   bool progress = true;                    // progress line on stderr
   bool restart = false;  // continue the run in the output folder from its last checkpoint
+  bool accept_output_changes = false;  // a restart may change the output settings
+                                       // (io/case_digest.hpp)
 };
 
 class Simulation {
@@ -79,7 +81,7 @@ class Simulation {
   void apply_reaction();
   void check_diagnostics();
   void write_output_if_due(bool force);
-  void open_probes(bool append);
+  void open_probes(std::optional<CsvResume> resume);
   RunLayout run_layout() const;  // the open groups (1 inflow/outflow, 0 wall), rain or not
   std::filesystem::path output_directory() const;
   /// Opens the run's output (a new folder, or continued after `output_times` on a restart).
@@ -87,6 +89,16 @@ class Simulation {
   // checkpoint.cpp: everything a run needs to continue bit for bit from an output time.
   void write_checkpoint(const std::string& path) const;
   void read_checkpoint(const std::string& path);
+  /// The case's settings and the mesh's checksum, which a restart must find unchanged.
+  std::vector<CaseSetting> run_settings() const;
+  /// Refuses a restart whose case differs from the checkpoint's (io/case_digest.hpp), naming
+  /// the keys that changed; true when output settings changed (and that was accepted).
+  bool check_restart_case(const std::string& path) const;
+  /// Refuses a restored state that is not physical (non-finite values, bodies far outside).
+  void check_restored_state(const std::string& path, const std::vector<double>& output_times) const;
+  /// Restarts only: the checkpoint, with the case checked against it (`output_changed` as
+  /// check_restart_case returns).
+  std::filesystem::path restart_checkpoint(bool& output_changed) const;
 
   Case case_;
   Mesh mesh_;

@@ -49,11 +49,12 @@ std::vector<int> locate_probes(const std::vector<Probe>& probes, const FlowField
 }  // namespace
 
 ProbeWriter::ProbeWriter(const std::string& csv_path, const std::vector<Probe>& probes,
-                         const FlowField& field, const std::string& case_file, bool append)
+                         const FlowField& field, const std::string& case_file,
+                         std::optional<CsvResume> resume)
     : field_(field),
       hints_(locate_probes(probes, field, case_file)),
       row_(1 + 4 * probes.size(), 0.0),
-      csv_(csv_path, probe_columns(probes), append) {
+      csv_(csv_path, probe_columns(probes), resume) {
   assert(!probes.empty() && "callers construct a ProbeWriter only when the case has probes");
   positions_.reserve(probes.size());
   for (const Probe& probe : probes) positions_.push_back(probe.position);

@@ -19,10 +19,11 @@ class ProbeWriter {
   /// Callers construct a ProbeWriter only when the case has probes (no probes: no file).
   /// Checks that every probe lies inside the domain, sampled at field.time_end(); one outside is
   /// an InputError naming `case_file`, the probe's line, name and position. Creates `csv_path`
-  /// with its header, or with `append` (a restarted run) adds rows after those already there.
+  /// with its header, or with `resume` (a restarted run) continues it from the checkpoint's time
+  /// (io/csv_writer.hpp CsvResume).
   /// Keeps a reference to `field`, which must outlive the writer.
   ProbeWriter(const std::string& csv_path, const std::vector<Probe>& probes, const FlowField& field,
-              const std::string& case_file, bool append);
+              const std::string& case_file, std::optional<CsvResume> resume);
 
   /// Samples every probe at t, which must lie in the field's current step
   /// [time_begin(), time_end()], and appends one row.

@@ -238,6 +238,21 @@ struct OutputConfig {
   double raster_resolution = 0.0;  // [m] pixel size of the envelopes' GeoTIFF rasters; 0: none
 };
 
+/// One setting of a case as its file gives it (io/case_digest.hpp): the key path
+/// ("flow.friction.coefficient", "bodies.list[2].x") and the value in a canonical text; for a
+/// file the case reads, "<key> (file contents)" and the checksum of its bytes.
+struct CaseSetting {
+  std::string key;
+  std::string value;
+  bool operator==(const CaseSetting&) const = default;
+};
+
+/// A file the case reads (the mesh, rasters, vector files): the key naming it and its path.
+struct InputFile {
+  std::string key;
+  std::string path;
+};
+
 struct Case {
   std::string file;  // the case file, for messages ("" when built in code)
   std::string name;  // defaults to the file's stem
@@ -247,6 +262,9 @@ struct Case {
   TimeConfig time;
   BodiesConfig bodies;
   OutputConfig output;
+  std::vector<CaseSetting> settings;   // every value of the case file, for restarts; empty when
+                                       // built in code
+  std::vector<InputFile> input_files;  // read by the run: never deleted by --overwrite
   std::string crs_wkt;  // the coordinate system of the case's coordinates (WKT): the key crs, else
                         // the terrain raster's, else mesh.region's files'; empty: none
 };

@@ -15,6 +15,11 @@ namespace {
 
 constexpr double radians_per_degree = pi / 180.0;  // [rad/deg]
 
+// Practical ranges (docs/case-format.md "Ranges"): a log or a car is at most a few tens of
+// metres; the densest solid (osmium) is 22 600 kg m^-3, the lightest wood (balsa) about 100.
+const Range size_range = Range::up_to(1000.0);              // L, l, b [m]
+const Range density_range = Range::between(10.0, 25000.0);  // rho_p [kg m^-3]
+
 BodyPhysics read_physics(const YamlMap& m) {
   BodyPhysics p;
   if (const auto law = m.find("drag_law")) {
@@ -63,7 +68,7 @@ double read_height(const YamlMap& m, Shape shape, double width, double fallback)
     m.forbid("height", "a log's height is its width (its diameter)");
     return width;
   }
-  return m.number("height", fallback, Range::positive());
+  return m.number("height", fallback, size_range);
 }
 
 BodySpec read_body(const YamlValue& item) {
@@ -71,8 +76,8 @@ BodySpec read_body(const YamlValue& item) {
   BodySpec b;
   b.shape = read_shape(m);
   const auto length = m.find("length"), width = m.find("width");
-  b.length = length ? length->number(Range::positive()) : b.length;
-  b.width = width ? width->number(Range::positive()) : b.width;
+  b.length = length ? length->number(size_range) : b.length;
+  b.width = width ? width->number(size_range) : b.width;
   if (b.width > b.length) {  // blame the key the user gave
     (width    ? *width
      : length ? *length
@@ -81,7 +86,7 @@ BodySpec read_body(const YamlValue& item) {
                           b.width, b.length));
   }
   b.height = read_height(m, b.shape, b.width, b.height);
-  b.density = m.number("density", b.density, Range::positive());
+  b.density = m.number("density", b.density, density_range);
   b.position = {m.get("x", "x_G [m]").number(), m.get("y", "y_G [m]").number()};
   b.angle = m.number("angle_deg", 0.0) * radians_per_degree;
   b.velocity = {m.number("u", 0.0), m.number("v", 0.0)};
@@ -139,7 +144,7 @@ void read_release_place(const YamlValue& item, Release& r) {
 void read_release_times(const YamlMap& m, Release& r) {
   r.start_time = m.number("start", r.start_time, Range::non_negative());
   if (const auto count = m.find("count")) {
-    r.count = count->integer(Range::at_least(1));
+    r.count = count->integer(Range::between(1, 1e6));
     m.forbid("rate", "a release with a count puts all its bodies at once at 'start'");
     m.forbid("end", "a release with a count puts all its bodies at once at 'start'");
     return;
@@ -156,9 +161,9 @@ Release read_release(const YamlValue& item) {
   read_release_times(m, r);
   r.shape = read_shape(m);
   std::tie(r.length_min, r.length_max) =
-      read_span(m, "length", {r.length_min, r.length_max}, Range::positive());
+      read_span(m, "length", {r.length_min, r.length_max}, size_range);
   std::tie(r.width_min, r.width_max) =
-      read_span(m, "width", {r.width_min, r.width_max}, Range::positive());
+      read_span(m, "width", {r.width_min, r.width_max}, size_range);
   if (r.width_max > r.length_min) {
     item.fail(
         fmt::format("the widest body ({} m) would exceed the shortest ({} m); length is "
@@ -167,7 +172,7 @@ Release read_release(const YamlValue& item) {
   }
   r.height = read_height(m, r.shape, r.width_max, r.height);
   std::tie(r.density_min, r.density_max) =
-      read_span(m, "density", {r.density_min, r.density_max}, Range::positive());
+      read_span(m, "density", {r.density_min, r.density_max}, density_range);
   std::tie(r.angle_min_deg, r.angle_max_deg) =
       read_span(m, "angle_deg", {r.angle_min_deg, r.angle_max_deg}, Range::any());
   r.seed = static_cast<unsigned long>(

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/case_digest.hpp"
 #include "io/case_sections.hpp"
 #include "io/yaml_reader.hpp"
 
@@ -99,7 +100,7 @@ MeshSource read_mesh(const YamlMap& m, const std::filesystem::path& case_folder,
   }
   if (kind == "file") {
     const YamlValue file = m.get("file");
-    const std::filesystem::path path = case_path(file.text(), case_folder);
+    const std::filesystem::path path = file.input_path(case_folder.string());
     if (!std::filesystem::is_regular_file(path)) {
       file.fail(
           fmt::format("no such mesh file '{}' (a relative path is read from the case "
@@ -159,7 +160,7 @@ BedConfig read_bed(const YamlMap& m, const std::filesystem::path& case_folder) {
     bed.kind = BedConfig::Kind::raster;
     bed.origin = raster->origin();
     bed.raster = std::make_shared<const Raster>(
-        Raster::read(case_path(raster->text(), case_folder).string(), bed.origin));
+        Raster::read(raster->input_path(case_folder.string()), bed.origin));
     if (const auto edit = m.find("expression")) bed.expression = edit->expression(true);
     return bed;
   }
@@ -345,6 +346,14 @@ Case parse_case(const std::string& text, const std::string& file_name) {
                      case_folder, geodata);
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
+  const bool has_bodies = !c.bodies.bodies.empty() || !c.bodies.releases.empty();
+  if (has_bodies && c.bodies.physics.drag_law == DragLaw::ganser && c.flow.viscosity <= 0.0) {
+    const YamlMap flow = root.get("flow").map();
+    (flow.has("viscosity") ? flow.get("viscosity") : flow.get("reynolds"))
+        .fail(
+            "the Ganser drag of the bodies needs a viscosity > 0 (its Reynolds number divides by "
+            "it); give the water's, 1e-6 m^2/s, or set bodies.physics.drag_law: constant");
+  }
   c.output = read_output(root.map("output"));
   c.crs_wkt = case_coordinate_system(geodata, root);
   if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)
@@ -352,6 +361,8 @@ Case parse_case(const std::string& text, const std::string& file_name) {
         "the flood envelopes and their rasters come from the finite-volume engine; set "
         "flow.engine: fv");
   document.check_no_unknown_keys();
+  for (const auto& [key, path] : document.input_files()) c.input_files.push_back({key, path});
+  c.settings = case_settings(document.node(), c.input_files);
   return c;
 }
 

@@ -12,7 +12,8 @@ namespace {
 // nu from the key `viscosity`, or from `reynolds` via nu = U_ref L_ref / Re (spec 1.2).
 double read_viscosity(const YamlMap& m, double fallback) {
   const std::string given = m.only_one_of({"viscosity", "reynolds"});
-  if (given == "viscosity") return m.get("viscosity").number(Range::non_negative());
+  if (given == "viscosity")
+    return m.get("viscosity").number(Range::between(0.0, 1000.0));  // [m^2/s]
   if (given.empty()) return fallback;
   const YamlMap re = m.get("reynolds").map();
   const double number = re.get("number", "Re [-]").number(Range::positive());
@@ -61,7 +62,7 @@ RainConfig read_rain(const YamlValue& value, const std::filesystem::path& case_f
   if (const auto raster = m.find("raster")) {
     rain.raster_origin = raster->origin();
     rain.raster = std::make_shared<const Raster>(
-        Raster::read(case_path(raster->text(), case_folder).string(), rain.raster_origin));
+        Raster::read(raster->input_path(case_folder.string()), rain.raster_origin));
     if (!rain.raster->grid().crs_wkt.empty())
       geodata.push_back(
           {rain.raster->grid().crs_wkt, fmt::format("the rain raster '{}'", rain.raster->path())});
@@ -156,8 +157,9 @@ FlowConfig read_flow(const YamlMap& m, const std::filesystem::path& case_folder,
     flow.scheme = scheme->choice<FlowScheme>(
         {{"coupled", FlowScheme::coupled}, {"segregated", FlowScheme::segregated}});
   }
-  flow.gravity = m.number("gravity", flow.gravity, Range::positive());
-  flow.water_density = m.number("density", flow.water_density, Range::positive());
+  flow.gravity = m.number("gravity", flow.gravity, Range::up_to(100.0));  // [m s^-2]
+  // [kg m^-3] fresh, salt and muddy water
+  flow.water_density = m.number("density", flow.water_density, Range::between(500.0, 2500.0));
   flow.viscosity = read_viscosity(m, flow.viscosity);
   if (m.has("friction")) read_friction(m.get("friction").map(), case_folder, flow, geodata);
   if (m.has("turbulence")) read_turbulence(m.get("turbulence").map(), flow);

@@ -116,7 +116,7 @@ void read_friction(const YamlMap& m, const std::filesystem::path& case_folder, F
   if (const auto raster = m.find("raster")) {
     map.raster_origin = raster->origin();
     map.raster = std::make_shared<const Raster>(
-        Raster::read(case_path(raster->text(), case_folder).string(), map.raster_origin));
+        Raster::read(raster->input_path(case_folder.string()), map.raster_origin));
     if (!map.raster->grid().crs_wkt.empty())
       geodata.push_back({map.raster->grid().crs_wkt,
                          fmt::format("the friction raster '{}'", map.raster->path())});

@@ -5,24 +5,18 @@
 
 namespace flotsam {
 
-std::filesystem::path case_path(const std::string& file, const std::filesystem::path& case_folder) {
-  std::filesystem::path path = file;
-  if (path.is_relative()) path = (case_folder / path).lexically_normal();
-  return path;
-}
-
 VectorLayer read_case_layer(const YamlValue& value, const std::filesystem::path& case_folder,
                             const std::string& value_field, const std::string& label_field) {
   std::string file, layer;
   if (value.is_map()) {
     const YamlMap m = value.map();
-    file = m.get("file", "the vector file (GeoPackage, Shapefile, GeoJSON)").text();
+    file = m.get("file", "the vector file (GeoPackage, Shapefile, GeoJSON)")
+               .input_path(case_folder.string());
     layer = m.text("layer", "");
   } else {
-    file = value.text();
+    file = value.input_path(case_folder.string());
   }
-  return read_vector_layer(case_path(file, case_folder).string(), layer, value.origin(),
-                           value_field, label_field);
+  return read_vector_layer(file, layer, value.origin(), value_field, label_field);
 }
 
 }  // namespace flotsam

@@ -18,9 +18,6 @@ struct GeodataCrs {
   std::string what;
 };
 
-/// `file` as given in the case: read from the case file's folder when relative.
-std::filesystem::path case_path(const std::string& file, const std::filesystem::path& case_folder);
-
 /// A vector layer given as a path or as {file, layer} (the map's other keys are the caller's),
 /// with the numeric attribute `value_field` per polygon and the text `label_field` per line when
 /// not empty (geo/vector_layer.hpp).

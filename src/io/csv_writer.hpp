@@ -5,19 +5,31 @@
 // the last row if the run is interrupted. See docs/output-format.md.
 #include <cstdio>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace flotsam {
 
+/// How a table of a restarted run continues (docs/output-format.md "Restarting a run"): the rows
+/// whose first column (the time) is at most `time` [s], the checkpoint's, are kept; later rows,
+/// written after the checkpoint by the run that stopped, and a cut last line are dropped, so
+/// that the restarted run writes them once. A missing table is written again with its header
+/// (the rows before `time` are lost; a warning says so); one with another header is an
+/// InputError naming it.
+struct CsvResume {
+  double time = 0.0;  // [s]
+};
+
 class CsvWriter {
  public:
   /// Creates (replaces) the file and writes the header. Column names should carry their unit,
   /// "speed [m/s]"; a name with a comma or a double quote is quoted (RFC 4180). Throws
-  /// InputError naming the path when the file cannot be created. With `append` (a restarted
-  /// run) the rows go after those already in the file, and no header is written.
-  CsvWriter(const std::string& path, std::vector<std::string> columns, bool append = false);
+  /// InputError naming the path when the file cannot be created. With `resume` (a restarted
+  /// run) the file is rewound to the checkpoint's time (CsvResume) and rows go after it.
+  CsvWriter(const std::string& path, std::vector<std::string> columns,
+            std::optional<CsvResume> resume = std::nullopt);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -33,6 +45,9 @@ class CsvWriter {
   std::size_t column_count() const { return columns_.size(); }
 
  private:
+  std::string header() const;
+  /// Keeps the rows up to `time`; true when the file exists.
+  bool rewind(double time) const;
   std::string path_;
   std::vector<std::string> columns_;
   std::FILE* file_ = nullptr;

@@ -30,7 +30,7 @@ bool is_within(const fs::path& inner, const fs::path& outer) {
 
 /// Refuses folders whose loss would be a disaster, whatever the overwrite flag.
 void refuse_dangerous(const std::string& directory, const fs::path& folder,
-                      const std::string& case_file) {
+                      const std::string& case_file, const std::vector<ProtectedInput>& inputs) {
   std::vector<std::pair<fs::path, const char*>> protected_paths = {
       {resolved(fs::current_path()), "the working directory"}};
   if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
@@ -45,6 +45,11 @@ void refuse_dangerous(const std::string& directory, const fs::path& folder,
   if (!case_file.empty() && is_within(resolved(case_file), folder))
     throw_input_error("output folder '{}' contains the case file '{}'; choose another folder",
                       directory, case_file);
+  for (const auto& [key, file] : inputs)
+    if (is_within(resolved(file), folder))
+      throw_input_error(
+          "output folder '{}' contains '{}', which the case reads ({}); choose another folder",
+          directory, file, key);
 }
 
 /// True when the folder holds nothing but (possibly) the marker: a run that stopped before its
@@ -64,10 +69,11 @@ void write_marker(const fs::path& folder) {
 }  // namespace
 
 fs::path prepare_output_directory(const std::string& directory, bool overwrite,
-                                  const std::string& case_file) {
+                                  const std::string& case_file,
+                                  const std::vector<ProtectedInput>& inputs) {
   if (directory.empty()) throw_input_error("output folder: the name is empty");
   const fs::path folder = resolved(directory);
-  refuse_dangerous(directory, folder, case_file);
+  refuse_dangerous(directory, folder, case_file, inputs);
 
   std::error_code error;
   if (fs::exists(folder) && !fs::is_directory(folder))

@@ -9,19 +9,26 @@
 //    `.flotsam-output` that this function leaves in every folder it prepares; otherwise it is an
 //    error (it was not made by flotsam: a typo such as --output src must not wipe the sources).
 //  * Always refused: "/", the home folder, the working directory, any folder containing one of
-//    those, a folder containing the case file, and a path that exists but is not a folder.
+//    those, a folder containing the case file or any file the case reads (mesh file, rasters,
+//    vector files), and a path that exists but is not a folder.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace flotsam {
 
 /// Name of the marker file left in every output folder.
 inline constexpr const char* output_marker = ".flotsam-output";
 
+/// A file the run reads: the key that names it ("mesh.file") and its path.
+using ProtectedInput = std::pair<std::string, std::string>;
+
 /// Applies the policy above and returns the folder's absolute path. `case_file` ("" when the
-/// case was built in code) is protected from deletion. Throws InputError with the reason and
-/// the way out.
+/// case was built in code) and `inputs` are protected from deletion. Throws InputError with the
+/// reason and the way out.
 std::filesystem::path prepare_output_directory(const std::string& directory, bool overwrite,
-                                               const std::string& case_file = "");
+                                               const std::string& case_file = "",
+                                               const std::vector<ProtectedInput>& inputs = {});
 
 }  // namespace flotsam

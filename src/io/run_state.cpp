@@ -3,6 +3,13 @@
 #include "io/binary_archive.hpp"
 
 namespace flotsam {
+
+template <>
+struct archive_fields<BoundaryEdge> {
+  static constexpr auto fields =
+      std::make_tuple(&BoundaryEdge::element, &BoundaryEdge::local_edge, &BoundaryEdge::group);
+};
+
 namespace {
 
 std::string join_lines(const std::vector<std::string>& lines) {
@@ -55,6 +62,7 @@ RunDescription read_run_description(const std::string& path) {
   m.node_tags = r.read<long>("mesh.node_tags");
   m.element_tags = r.read<long>("mesh.element_tags");
   run.open_group = r.read<std::uint8_t>("open_group");
+  r.finish();
   return run;
 }
 
@@ -93,6 +101,7 @@ RunSnapshot read_run_snapshot(const std::string& path) {
   s.width = r.read<double>("bodies.width");
   s.state = r.read<BodyState>("bodies.state");
   s.jammed = r.read<std::uint8_t>("bodies.jammed");
+  r.finish();
   return s;
 }
 

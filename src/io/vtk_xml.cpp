@@ -104,12 +104,21 @@ std::filesystem::path part_path(const std::string& path) {
   return std::filesystem::path(path + ".part");
 }
 
+// A failed write (a full disk) leaves no .part file behind.
 void finish(std::ofstream& out, const std::string& path) {
   out.close();
-  if (!out) throw_input_error("cannot write '{}': {}", path, std::strerror(errno));
   std::error_code error;
+  if (!out) {
+    const int code = errno;
+    std::filesystem::remove(part_path(path), error);
+    throw_input_error("cannot write '{}': {}", path, std::strerror(code));
+  }
   std::filesystem::rename(part_path(path), path, error);
-  if (error) throw_input_error("cannot write '{}': {}", path, error.message());
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(part_path(path), ignored);
+    throw_input_error("cannot write '{}': {}", path, error.message());
+  }
 }
 
 std::ofstream open_part(const std::string& path) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "core/error.hpp"
 
@@ -117,6 +118,9 @@ double YamlValue::number(Range range) const {
   const bool ok = node_.IsScalar() && node_.Tag() != "!" && YAML::convert<double>::decode(node_, x);
   if (!ok) fail(fmt::format("expected {}, got {}", range.describe(), kind_found()));
   if (!std::isfinite(x)) fail(fmt::format("expected a finite number, got {}", kind_found()));
+  if (std::abs(x) > Range::largest)
+    fail(fmt::format("expected {} of magnitude at most {:g} (no key needs more), got {}",
+                     range.describe(), Range::largest, node_.Scalar()));
   if (!range.contains(x))
     fail(fmt::format("expected {}, got {}", range.describe(), node_.Scalar()));
   return x;
@@ -323,6 +327,13 @@ std::vector<std::pair<std::string, YamlValue>> YamlMap::entries() const {
 }
 
 // ---- YamlDocument -------------------------------------------------------------------------
+
+std::string YamlValue::input_path(const std::string& case_folder) const {
+  std::filesystem::path file = text();
+  if (file.is_relative()) file = (std::filesystem::path(case_folder) / file).lexically_normal();
+  document_->input_files_.emplace_back(path_, file.string());
+  return file.string();
+}
 
 YamlDocument::YamlDocument(const std::string& text, std::string file_name)
     : file_name_(std::move(file_name)) {

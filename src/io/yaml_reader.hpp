@@ -39,6 +39,11 @@ struct Range {
   static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity()}; }
   static Range at_least(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
   static Range between(double lo, double hi) { return {lo, hi}; }
+  static Range up_to(double hi) { return {0.0, hi, true, false}; }  // (0, hi]
+
+  /// No number in a case exceeds this magnitude (docs/case-format.md "Ranges"): larger ones
+  /// are typos of an exponent, and would overflow the run's arithmetic.
+  static constexpr double largest = 1e9;
 
   bool contains(double x) const;
   /// "a number > 0", "a number in [0, 1]", "a number".
@@ -78,6 +83,9 @@ class YamlValue {
   Expression expression(bool uses_z = false) const;
   /// "file:line: path", where this value was written (for messages raised later).
   std::string origin() const;
+  /// The text as the path of a file the run reads, relative to `case_folder` unless absolute;
+  /// recorded as one of the case's input files (YamlDocument::input_files).
+  std::string input_path(const std::string& case_folder) const;
   /// A constant or a table [[x, value], ...] with strictly increasing x (named `abscissa` in
   /// messages) -> TimeSeries.
   TimeSeries series(std::string_view abscissa, Range range = Range::any()) const;
@@ -170,8 +178,16 @@ class YamlDocument {
 
   [[noreturn]] void fail(int line, std::string_view path, std::string_view what) const;
 
+  /// The parsed document, for walks over every value (io/case_digest.hpp).
+  const YAML::Node& node() const { return root_; }
+  /// The files the case reads (key path, path), in the order read (YamlValue::input_path).
+  const std::vector<std::pair<std::string, std::string>>& input_files() const {
+    return input_files_;
+  }
+
  private:
   friend class YamlMap;
+  friend class YamlValue;
   void note_known(const std::string& map_path, std::string_view key);
   void note_read(const std::string& key_path) { read_.insert(key_path); }
   void check_node(const YAML::Node& node, const std::string& path) const;
@@ -179,8 +195,9 @@ class YamlDocument {
 
   std::string file_name_;
   YAML::Node root_;
-  std::set<std::string> read_;                             // key paths read
-  std::map<std::string, std::vector<std::string>> known_;  // map path -> keys asked for
+  std::set<std::string> read_;                                    // key paths read
+  std::map<std::string, std::vector<std::string>> known_;         // map path -> keys asked for
+  std::vector<std::pair<std::string, std::string>> input_files_;  // key path, file
 };
 
 /// 1-based line of a node, or `fallback` when yaml-cpp has no mark for it (null nodes).

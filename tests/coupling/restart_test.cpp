@@ -31,6 +31,7 @@ Case restart_case(double end) {
   c.flow.friction_coefficient = 0.03;
   c.time = {.end = end, .step = 1.0, .mode = CouplingMode::two_way};
   c.output.interval = 4.0;
+  c.output.probes = {{"gauge", Vec2(100.0, 10.0)}};
   for (int k = 0; k < 3; ++k) {  // three logs that collide: the middle one is slow
     BodySpec log;
     log.length = 6.0;
@@ -94,9 +95,62 @@ TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
     EXPECT_EQ(a.angular_velocity[i], b.angular_velocity[i]) << "body " << i;
   }
   for (const char* table : {"restart_bodies.csv", "restart_balance.csv", "restart_jams.csv",
-                            "restart.pvd", "restart_bodies.pvd"})
+                            "restart_probes.csv", "restart.pvd", "restart_bodies.pvd"})
     EXPECT_EQ(text_of(base / "split" / table), text_of(base / "whole" / table)) << table;
   fs::remove_all(base);
+}
+
+const char* const tables[] = {"restart_bodies.csv", "restart_balance.csv", "restart_jams.csv",
+                              "restart_probes.csv"};
+
+RunOptions options_in(const fs::path& dir, bool restart) {
+  return {.output_directory = dir, .progress = false, .restart = restart};
+}
+
+// A run killed after it wrote the tables of its output at 8 s but before it replaced the
+// checkpoint of 4 s: the restart drops the rows of 8 s and later, and writes them once.
+TEST(Restart, RewindsEveryTableToTheCheckpoint) {
+  const fs::path base = test::fresh_test_folder("restart");
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  Simulation(restart_case(12.0), mesh, options_in(base / "whole", false)).run();
+  const fs::path split = base / "split";
+  Simulation(restart_case(4.0), mesh, options_in(split, false)).run();
+  fs::copy_file(split / "checkpoint.bin", base / "checkpoint_4s.bin");
+  Simulation(restart_case(8.0), mesh, options_in(split, true)).run();
+  fs::copy_file(base / "checkpoint_4s.bin", split / "checkpoint.bin",
+                fs::copy_options::overwrite_existing);
+  Simulation rest(restart_case(12.0), mesh, options_in(split, true));
+  rest.run();
+  for (const char* table : tables)
+    EXPECT_EQ(text_of(split / table), text_of(base / "whole" / table)) << table;
+}
+
+/// The lines of a text file.
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// A table removed before a restart is written again: its header, then the rows after the
+// checkpoint's time, as the uninterrupted run writes them.
+TEST(Restart, WritesAMissingTableAgainWithItsHeader) {
+  const fs::path base = test::fresh_test_folder("restart");
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  Simulation(restart_case(12.0), mesh, options_in(base / "whole", false)).run();
+  const fs::path split = base / "split";
+  Simulation(restart_case(8.0), mesh, options_in(split, false)).run();
+  for (const char* table : tables) fs::remove(split / table);
+  Simulation(restart_case(12.0), mesh, options_in(split, true)).run();
+  for (const char* table : tables) {
+    const auto whole = lines_of(base / "whole" / table), rest = lines_of(split / table);
+    std::vector<std::string> expected = {whole.front()};
+    for (std::size_t k = 1; k < whole.size(); ++k)
+      if (std::stod(whole[k]) > 8.0) expected.push_back(whole[k]);
+    EXPECT_EQ(rest, expected) << table;
+    EXPECT_GT(expected.size(), 1u) << table;
+  }
 }
 
 // The finite-volume engine's flood envelopes (running maxima, arrival, wet duration) and their

@@ -112,7 +112,7 @@ TEST(ProbeWriter, WritesHeaderAndSampledValues) {
   const fs::path path = test::fresh_test_folder("probes") / "river_probes.csv";
   TestFlow flow;
   {
-    ProbeWriter probes(path.string(), gauges, flow, "river.yaml", false);
+    ProbeWriter probes(path.string(), gauges, flow, "river.yaml", std::nullopt);
     EXPECT_EQ(probes.probe_count(), 3u);
     EXPECT_EQ(probes.path(), path.string());
     EXPECT_EQ(read_lines(path), std::vector<std::string>{header});  // header written at once
@@ -132,7 +132,7 @@ TEST(ProbeWriter, WritesHeaderAndSampledValues) {
 TEST(ProbeWriter, KeepsOneHintPerProbe) {
   const fs::path path = test::fresh_test_folder("probes") / "river_probes.csv";
   TestFlow flow;
-  ProbeWriter probes(path.string(), gauges, flow, "river.yaml", false);
+  ProbeWriter probes(path.string(), gauges, flow, "river.yaml", std::nullopt);
   probes.write(0.25);
   // The check at construction starts without a hint; write passes back each probe's own strip.
   EXPECT_EQ(flow.hints_received, (std::vector<int>{-1, -1, -1, 3, 8, 10}));
@@ -142,14 +142,14 @@ TEST(ProbeWriter, AppendAddsRowsWithoutASecondHeader) {
   const fs::path path = test::fresh_test_folder("probes") / "river_probes.csv";
   TestFlow flow;
   {
-    ProbeWriter probes(path.string(), gauges, flow, "river.yaml", false);
+    ProbeWriter probes(path.string(), gauges, flow, "river.yaml", std::nullopt);
     probes.write(0.0);
     probes.write(1.0);
   }
   flow.begin = 1.0;
   flow.end = 2.0;
   {
-    ProbeWriter restarted(path.string(), gauges, flow, "river.yaml", true);
+    ProbeWriter restarted(path.string(), gauges, flow, "river.yaml", CsvResume{1.0});
     restarted.write(2.0);
   }
   const auto lines = read_lines(path);
@@ -166,7 +166,7 @@ TEST(ProbeWriter, ProbeOutsideTheDomainNamesProbeLineAndFile) {
   std::vector<Probe> probes = gauges;
   probes.push_back({.name = "culvert", .position = Vec2(12.5, 1.0), .line = 42});
   try {
-    ProbeWriter writer(path.string(), probes, flow, "cases/river.yaml", false);
+    ProbeWriter writer(path.string(), probes, flow, "cases/river.yaml", std::nullopt);
     FAIL() << "a probe outside the domain was accepted";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("cases/river.yaml:42: "));
@@ -177,7 +177,7 @@ TEST(ProbeWriter, ProbeOutsideTheDomainNamesProbeLineAndFile) {
   // A probe built in code (line 0) names the file alone.
   const std::vector<Probe> below = {{.name = "deep", .position = Vec2(5.0, -0.25), .line = 0}};
   try {
-    ProbeWriter writer(path.string(), below, flow, "river.yaml", false);
+    ProbeWriter writer(path.string(), below, flow, "river.yaml", std::nullopt);
     FAIL() << "a probe outside the domain was accepted";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("river.yaml: output.probes: probe 'deep' at (5, -0.25) m"));

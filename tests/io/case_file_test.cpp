@@ -775,7 +775,7 @@ TEST(CaseFileError, ReleaseZonesAreChecked) {
             "here: start, count, rate, end, shape, length, width, height, density, angle_deg, "
             "seed, line, zone");
   EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], count: 0}")),
-            "case.yaml:14: bodies.release[0].count: expected an integer >= 1, got 0");
+            "case.yaml:14: bodies.release[0].count: expected an integer in [1, 1000000], got 0");
   EXPECT_EQ(error_of(release("{zone: [[0, 0], [5, 0], [5, 5]], count: 3, rate: 2}")),
             "case.yaml:14: bodies.release[0].rate: not allowed here: a release with a count puts "
             "all its bodies at once at 'start'");
@@ -853,11 +853,11 @@ TEST(CaseFileError, OutOfRangeGivesTheRange) {
   EXPECT_EQ(error_of(appended("bodies: {contact: {restitution: 1.5}}\n")),
             "case.yaml:12: bodies.contact.restitution: expected a number in [0, 1], got 1.5");
   EXPECT_EQ(error_of(edited("  initial:", "  density: -1000\n  initial:")),
-            "case.yaml:5: flow.density: expected a number > 0, got -1000");
+            "case.yaml:5: flow.density: expected a number in [500, 2500], got -1000");
   EXPECT_EQ(error_of(edited("  initial:", "  min_depth: 0\n  initial:")),
             "case.yaml:5: flow.min_depth: expected a number > 0, got 0");
   EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, density: -600}\n")),
-            "case.yaml:14: bodies.list[0].density: expected a number > 0, got -600");
+            "case.yaml:14: bodies.list[0].density: expected a number in [10, 25000], got -600");
   EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, length: 0.5}\n")),
             "case.yaml:14: bodies.list[0].length: the width 1 m exceeds the length 0.5 m; length "
             "is the long side");

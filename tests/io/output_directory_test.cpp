@@ -150,3 +150,30 @@ TEST_F(OutputDirectory, FileInTheWayIsRefused) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A mesh file (or raster, vector file) the case reads, kept in an earlier output folder:
+// --overwrite must not delete it (issue 20 item 5).
+TEST(OutputDirectoryInputs, RefusesAFolderHoldingAFileTheCaseReads) {
+  const fs::path root = test::fresh_test_folder("flotsam_outdir_inputs");
+  const fs::path folder = root / "run";
+  prepare_output_directory(folder.string(), false);
+  std::ofstream(folder / "mesh.msh") << "$MeshFormat\n";
+  try {
+    prepare_output_directory(folder.string(), true, "",
+                             {{"mesh.file", (folder / "mesh.msh").string()}});
+    FAIL() << "emptied a folder holding the mesh file";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "output folder '" + folder.string() + "' contains '" +
+                  (folder / "mesh.msh").string() +
+                  "', which the case reads (mesh.file); choose another folder");
+  }
+  EXPECT_TRUE(fs::exists(folder / "mesh.msh"));
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -64,3 +64,27 @@ if(FLOTSAM_FFMPEG)
   set_tests_properties(cli.render_tiny_movie PROPERTIES FIXTURES_REQUIRED
                        "cli_tiny_pictures;cli_tiny_checked")
 endif()
+
+# A restart checks the case against the checkpoint's (issue 20 item 1): an edited viscosity is
+# refused, naming the key with its two values.
+file(READ ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml tiny_text)
+string(REPLACE "viscosity: 0.05" "viscosity: 0.06" tiny_text "${tiny_text}")
+file(WRITE ${cli_work}/tiny_case_edited.yaml "${tiny_text}")
+flotsam_cli_test(restart_refuses_an_edited_case nonzero "flow.viscosity: 0.05 then, 0.06 now"
+                 run tiny_case_edited.yaml -o tiny_restart --restart -q)
+set_tests_properties(cli.restart_refuses_an_edited_case PROPERTIES FIXTURES_REQUIRED cli_tiny_half)
+flotsam_cli_test(run_refuses_end_nan nonzero "expected a finite time > 0"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_nan --end nan -q)
+
+# A checkpoint is a function of the state alone (issue 20 item 3): valgrind finds no
+# uninitialised byte written by a run with a checkpoint.
+find_program(FLOTSAM_VALGRIND valgrind)
+if(FLOTSAM_VALGRIND)
+  add_test(NAME cli.checkpoint_has_no_uninitialised_bytes
+           COMMAND ${FLOTSAM_VALGRIND} -q --error-exitcode=3 $<TARGET_FILE:flotsam> run
+                   ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_valgrind --end 1
+                   --overwrite -q
+           WORKING_DIRECTORY ${cli_work})
+  set_tests_properties(cli.checkpoint_has_no_uninitialised_bytes PROPERTIES LABELS "cli"
+                       ENVIRONMENT "${test_environment}")
+endif()
