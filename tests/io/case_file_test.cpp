@@ -793,8 +793,8 @@ TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
   EXPECT_EQ(
       error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
       "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
-      "engine, fv, gravity, density, viscosity, reynolds, friction, turbulence, coriolis, wind, "
-      "rain, min_depth, dry_depth, initial, boundaries");
+      "engine, fv, scheme, gravity, density, viscosity, reynolds, friction, turbulence, coriolis, "
+      "wind, rain, min_depth, dry_depth, initial, boundaries");
   EXPECT_EQ(error_of(appended("nmae: river\n")),
             "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
             "bed, flow, time, bodies, output, crs");
