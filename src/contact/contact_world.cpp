@@ -57,11 +57,53 @@ Rectangle body_rectangle(const BodySet& bodies, int i) {
 ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coefficient)
     : config_(config), added_mass_coefficient_(added_mass_coefficient) {}
 
+// The solve moves each body on by h times its change of velocity. Detection only saw the gaps
+// within its margin (2 slop), so a body pushed further than that by a neighbour (a log struck
+// from upstream, pushed towards a pier a few centimetres away) may be moved into a contact
+// nobody detected, and across a pier in one interval. Then the interval is solved again from
+// the same state, each body's detection margin grown by the distance the first solve moved it:
+// the contacts it would have run into are now seen as gaps, whose speculative target (v* = -s/h)
+// lets it close them and no more.
 void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval) {
   assert(interval >= 0.0);  // a programming error, not bad input
+  reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
+  std::vector<ContactConstraint> last = contacts_;  // the last interval's, for the warm start
   detect(bodies, walls);
   solve(bodies, interval);
+  if (grow_reach(bodies, interval)) {
+    undo_solve(bodies, interval);
+    contacts_ = std::move(last);
+    detect(bodies, walls);
+    solve(bodies, interval);
+    profile_.second_solves = 1;
+  } else {
+    profile_.second_solves = 0;
+  }
   correct_positions(bodies);
+}
+
+// reach_i = how far the solve moved body i's farthest point, h (|du| + |d omega| R), where it is
+// more than its detection margin; true when some body's is.
+bool ContactWorld::grow_reach(const BodySet& bodies, double interval) {
+  bool grown = false;
+  for (int i = 0; i < bodies.size(); ++i) {
+    if (bodies.state[i] == BodyState::gone) continue;
+    const double R = 0.5 * std::hypot(bodies.length[i], bodies.width[i]);  // [m]
+    const double moved =
+        interval * ((bodies.velocity[i] - velocity_before_[i]).norm() +
+                    std::abs(bodies.angular_velocity[i] - angular_velocity_before_[i]) * R);
+    if (moved > 2.0 * config_.allowed_overlap * bodies.width[i]) reach_[i] = moved, grown = true;
+  }
+  return grown;
+}
+
+void ContactWorld::undo_solve(BodySet& bodies, double interval) {
+  for (int i = 0; i < bodies.size(); ++i) {
+    bodies.position[i] -= interval * (bodies.velocity[i] - velocity_before_[i]);
+    bodies.angle[i] -= interval * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    bodies.velocity[i] = velocity_before_[i];
+    bodies.angular_velocity[i] = angular_velocity_before_[i];
+  }
 }
 
 void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls) {
@@ -74,16 +116,18 @@ void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls) 
   profile_.narrow_phase = clock.lap();
 }
 
-// Each box is the body's footprint grown by its contact margin 2 * allowed_overlap * l, so
-// that every pair the narrow phase would keep (gap <= margin) is a candidate.
+// Each box is the body's footprint grown by its contact margin 2 * allowed_overlap * l (and its
+// reach, see step()), so that every pair the narrow phase would keep (gap <= margin) is a
+// candidate.
 void ContactWorld::update_boxes(const BodySet& bodies) {
   const int n = bodies.size();
+  reach_.resize(static_cast<std::size_t>(n), 0.0);  // zero unless step() grew it
   boxes_.resize(static_cast<std::size_t>(n));
   active_.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     active_[i] = bodies.state[i] != BodyState::gone;
     const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
-    const double grow = 2.0 * config_.allowed_overlap * bodies.width[i];  // [m]
+    const double grow = 2.0 * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
                       std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y() + grow);
     boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
@@ -129,7 +173,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
     const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
     const double slop = config_.allowed_overlap * width;              // [m]
     const Manifold m = collide_rectangles(body_rectangle(bodies, i), body_rectangle(bodies, j),
-                                          2.0 * slop, 0.1 * slop);
+                                          2.0 * slop + reach_[i] + reach_[j], 0.1 * slop);
     if (m.point_count == 0) continue;
     contacts_.push_back(make_constraint(m, i, j, -1, config_.friction, slop, width));
     relative(contacts_.back());
@@ -138,7 +182,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
     const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
     const Manifold m =
         collide_rectangle_segment(body_rectangle(bodies, i), walls.start[s], walls.end[s],
-                                  walls.normal[s], 2.0 * slop, 0.1 * slop);
+                                  walls.normal[s], 2.0 * slop + reach_[i], 0.1 * slop);
     if (m.point_count == 0) continue;
     contacts_.push_back(make_constraint(m, i, -1, s, config_.friction, slop, bodies.width[i]));
     relative(contacts_.back());

@@ -31,6 +31,7 @@ struct ContactProfile {
   int warm_started_points = 0;  // points matched to one of the last step's
   int velocity_sweeps = 0;
   double largest_overlap = 0.0;  // [m] after position correction
+  int second_solves = 0;         // 1 when the interval was solved again with grown margins
 };
 
 enum class BroadPhase { sweep_and_prune, brute_force };
@@ -74,6 +75,8 @@ class ContactWorld {
   void collide(const BodySet& bodies, const BoundarySegments& walls);
   void match_previous_points();
   void solve(BodySet& bodies, double interval);
+  bool grow_reach(const BodySet& bodies, double interval);
+  void undo_solve(BodySet& bodies, double interval);
   void correct_positions(BodySet& bodies);
 
   ContactConfig config_;
@@ -88,6 +91,7 @@ class ContactWorld {
   SolverMasses masses_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
+  std::vector<double> reach_;  // [m] per body, added to its detection margin (see step())
   std::vector<int> found_, stamp_;
   int stamp_value_ = 0;
   ContactProfile profile_;
