@@ -19,6 +19,10 @@ TEST(NoTunnellingThroughWalls, TenThousandThrowsAtBanksAndPier) {
   EXPECT_GT(s.hits, s.throws / 2);  // most throws reach their wall: the contacts are exercised
   EXPECT_LT(s.deepest, 0.5);        // relative to l
   EXPECT_LT(s.deepest_end, 0.0075);
+  RecordProperty("intervals", static_cast<int>(s.intervals));
+  RecordProperty("hits", static_cast<int>(s.hits));
+  RecordProperty("deepest_permille", static_cast<int>(1000.0 * s.deepest));
+  RecordProperty("deepest_end_per_100000", static_cast<int>(1e5 * s.deepest_end));
 }
 
 }  // namespace
