@@ -68,6 +68,9 @@ TEST(LogJamAtPiers, FiftyLogsComeToRestAgainstTwoPiersAndStay) {
     worst.deepest = std::max(worst.deepest, s.deepest);
     worst.farthest = std::max(worst.farthest, s.farthest);
   }
+  RecordProperty("settled_after_steps", step);
+  RecordProperty("fastest_micrometres_per_s", static_cast<int>(1e6 * worst.fastest));
+  RecordProperty("deepest_micrometres", static_cast<int>(1e6 * worst.deepest));
   EXPECT_LT(worst.fastest, 1e-3);
   EXPECT_LT(worst.deepest, 0.01 * width);
   EXPECT_LT(worst.farthest, scene.pier_x);
