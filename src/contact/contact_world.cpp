@@ -67,12 +67,11 @@ ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coeffi
 void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval) {
   assert(interval >= 0.0);  // a programming error, not bad input
   reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
-  std::vector<ContactConstraint> last = contacts_;  // the last interval's, for the warm start
   detect(bodies, walls);
   solve(bodies, interval);
   if (grow_reach(bodies, interval)) {
     undo_solve(bodies, interval);
-    contacts_ = std::move(last);
+    contacts_ = previous_;  // the last interval's contacts again, for the warm start
     detect(bodies, walls);
     solve(bodies, interval);
     profile_.second_solves = 1;
