@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/case_error.hpp"
 #include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -54,15 +55,7 @@ std::string appended(const std::string& extra) {
   return base_case + extra;
 }
 
-// The message of the InputError parsing `text` throws, or "no error".
-std::string error_of(const std::string& text) {
-  try {
-    parse_case(text, "case.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::error_of;  // tests/support/case_error.hpp
 
 double degrees(double deg) {
   return deg * pi / 180.0;

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "../support/case_error.hpp"
 #include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "geo/vector_layer.hpp"
@@ -32,14 +33,7 @@ time: {end: 10}
 )";
 }
 
-std::string error_of(const std::string& text, const std::string& file = "case.yaml") {
-  try {
-    parse_case(text, file);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::error_of;  // tests/support/case_error.hpp
 
 // Layers are written in UTM zone 33N (a projected coordinate system in metres).
 const std::string utm33 = coordinate_system_wkt("EPSG:32633", "test");

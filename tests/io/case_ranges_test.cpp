@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "../support/case_error.hpp"
 #include "core/error.hpp"
 #include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
@@ -34,14 +35,7 @@ std::string edited(const std::string& from, const std::string& to) {
   return text;
 }
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_case(text, "case.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::error_of;  // tests/support/case_error.hpp
 
 TEST(CaseRanges, AbsurdValuesAreRefusedNamingTheKey) {
   EXPECT_EQ(error_of(base_case + "bodies:\n  list:\n    - {x: 1, y: 2, density: 1e308}\n"),
