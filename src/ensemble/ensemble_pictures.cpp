@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "render/cairo_draw.hpp"
+#include "render/colour_bar.hpp"
 
 namespace flotsam {
 
@@ -46,7 +47,8 @@ struct Canvas {
   }
 };
 
-/// Frame, ticks (five per axis), labels and title of a chart.
+/// Frame, ticks at round values (about five per axis, as the colour bars'), labels and title of a
+/// chart.
 void draw_axes(cairo_t* cr, const Axes& a, const std::string& title, const std::string& x_label,
                const std::string& y_label) {
   set_colour(cr, ink);
@@ -54,11 +56,18 @@ void draw_axes(cairo_t* cr, const Axes& a, const std::string& title, const std::
   cairo_rectangle(cr, a.px(a.x0), a.py(a.y1), a.px(a.x1) - a.px(a.x0), a.py(a.y0) - a.py(a.y1));
   cairo_stroke(cr);
   set_font(cr, 13);
-  for (int k = 0; k <= 4; ++k) {
-    const double x = a.x0 + (a.x1 - a.x0) * k / 4.0, y = a.y0 + (a.y1 - a.y0) * k / 4.0;
-    draw_text(cr, a.px(x), a.py(a.y0) + 20, fmt::format("{:.3g}", x), Align::centre);
-    draw_text(cr, a.px(a.x0) - 8, a.py(y) + 4, fmt::format("{:.3g}", y), Align::right);
+  const double x_step = nice_step(a.x1 - a.x0, 5), y_step = nice_step(a.y1 - a.y0, 5);
+  for (const double x : nice_ticks(a.x0, a.x1)) {
+    cairo_move_to(cr, a.px(x), a.py(a.y0));
+    cairo_line_to(cr, a.px(x), a.py(a.y0) + 5);
+    draw_text(cr, a.px(x), a.py(a.y0) + 20, format_tick(x, x_step), Align::centre);
   }
+  for (const double y : nice_ticks(a.y0, a.y1)) {
+    cairo_move_to(cr, a.px(a.x0) - 5, a.py(y));
+    cairo_line_to(cr, a.px(a.x0), a.py(y));
+    draw_text(cr, a.px(a.x0) - 8, a.py(y) + 4, format_tick(y, y_step), Align::right);
+  }
+  cairo_stroke(cr);
   draw_text(cr, 0.5 * (a.px(a.x0) + a.px(a.x1)), picture_height - 20, x_label, Align::centre);
   cairo_save(cr);
   cairo_translate(cr, 30, 0.5 * (a.py(a.y0) + a.py(a.y1)));
