@@ -1,0 +1,167 @@
+// flotsam's contact stage and Box2D 2.4 (Debian's libbox2d-dev) side by side on one scene (issue
+// 18, item 1): the packed jam of bench_contacts (src/contact/jam_scene.hpp: logs 10 m x 0.5 m in
+// rows against a line of circular piers in a walled channel, about 50 logs per gap), pushed
+// downstream by a force of 0.2 m/s^2 per unit mass standing in for the drag, N = 1k, 10k, 50k.
+// Both engines step the same 0.02 s steps from the same poses: flotsam moves the logs under the
+// push and runs its contact stage (ContactWorld::step); Box2D steps its world (8 velocity and 3
+// position iterations, its defaults; sleeping on). After the warm-up and the timed steps, the
+// poses of both are measured with flotsam's narrow phase: the largest and the 99th-percentile
+// overlap between bodies and into walls, and the logs whose centre is past the piers (must be 0).
+//
+//   cmake --build <build> --target bench_contacts_vs_box2d
+//   <build>/bench/bench_contacts_vs_box2d            # about 3 minutes; figures: performance.md
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "contact/contact_world.hpp"
+#include "contact/jam_scene.hpp"
+
+namespace flotsam {
+namespace {
+
+struct Result {
+  double ms_per_step = 0.0;    // [ms] wall time of one step
+  double largest = 0.0;        // [m] largest overlap, bodies and walls
+  double percentile_99 = 0.0;  // [m] 99th percentile of the overlaps of the contact points
+  int past_piers = 0;          // logs whose centre is downstream of the piers' line
+  double sweeps = 0.0;         // flotsam: mean velocity sweeps per step (its cap: 200)
+  double second_solves = 0.0;  // flotsam: share of the steps solved twice (docs/model.md)
+};
+
+// Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
+Result measure(const JamScene& scene) {
+  ContactConfig config = jam_contact_config();
+  config.allowed_overlap = 0.0;
+  ContactWorld world(config);
+  world.detect(scene.bodies, scene.walls);
+  std::vector<double> overlaps;
+  for (const ContactConstraint& c : world.contacts())
+    for (int k = 0; k < c.point_count; ++k)
+      overlaps.push_back(std::max(0.0, -c.points[static_cast<std::size_t>(k)].separation));
+  Result r;
+  if (!overlaps.empty()) {
+    std::sort(overlaps.begin(), overlaps.end());
+    r.largest = overlaps.back();
+    r.percentile_99 = overlaps[static_cast<std::size_t>(0.99 * (overlaps.size() - 1))];
+  }
+  for (int i = 0; i < scene.bodies.size(); ++i)
+    if (scene.bodies.position[i].x() > scene.pier_x) ++r.past_piers;
+  return r;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Result run_flotsam(JamScene scene, int warm_up, int timed) {
+  ContactWorld world(jam_contact_config());
+  for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
+  double sweeps = 0.0, second_solves = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < timed; ++k) {
+    world.step(scene.bodies, scene.walls, move_jam_logs(scene));
+    sweeps += world.profile().velocity_sweeps;
+    second_solves += world.profile().second_solves;
+  }
+  const double seconds = seconds_since(start);
+  Result r = measure(scene);
+  r.ms_per_step = 1e3 * seconds / timed;
+  r.sweeps = sweeps / timed;
+  r.second_solves = second_solves / timed;
+  return r;
+}
+
+// The same scene in a Box2D world: banks as edges, piers as circles (flotsam's are 64-gons on
+// the circle), logs as boxes of the same mass and moment of inertia about the vertical.
+Result run_box2d(JamScene scene, int warm_up, int timed) {
+  const ContactConfig config = jam_contact_config();
+  auto world = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
+  b2BodyDef ground_def;
+  b2Body* ground = world->CreateBody(&ground_def);
+  const BoundarySegments& walls = scene.walls;
+  for (int s = 0; s < walls.size(); ++s) {
+    if (walls.group[s] >= 2) continue;  // the piers' segments: circles below
+    b2EdgeShape edge;
+    edge.SetTwoSided(
+        b2Vec2(static_cast<float>(walls.start[s].x()), static_cast<float>(walls.start[s].y())),
+        b2Vec2(static_cast<float>(walls.end[s].x()), static_cast<float>(walls.end[s].y())));
+    ground->CreateFixture(&edge, 0.0f);
+  }
+  const int piers = static_cast<int>(walls.group_names.size()) - 2;
+  for (int j = 0; j < piers; ++j) {
+    b2CircleShape circle;
+    circle.m_p.Set(static_cast<float>(scene.pier_x), static_cast<float>(6.0 + 8.0 * j));
+    circle.m_radius = static_cast<float>(scene.pier_radius);
+    ground->CreateFixture(&circle, 0.0f);
+  }
+  BodySet& b = scene.bodies;
+  std::vector<b2Body*> logs;
+  for (int i = 0; i < b.size(); ++i) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(static_cast<float>(b.position[i].x()), static_cast<float>(b.position[i].y()));
+    def.angle = static_cast<float>(b.angle[i]);
+    b2Body* body = world->CreateBody(&def);
+    b2PolygonShape box;
+    box.SetAsBox(static_cast<float>(0.5 * b.length[i]), static_cast<float>(0.5 * b.width[i]));
+    b2FixtureDef fixture;
+    fixture.shape = &box;
+    fixture.density = static_cast<float>(b.mass[i] / (b.length[i] * b.width[i]));  // [kg/m^2]
+    fixture.friction = static_cast<float>(config.friction);
+    fixture.restitution = static_cast<float>(config.restitution);
+    body->CreateFixture(&fixture);
+    logs.push_back(body);
+  }
+  constexpr float dt = static_cast<float>(jam_max_step);
+  const auto step = [&] {
+    for (b2Body* body : logs)
+      body->ApplyForceToCenter(b2Vec2(body->GetMass() * static_cast<float>(jam_push), 0.0f), true);
+    world->Step(dt, 8, 3);
+  };
+  for (int k = 0; k < warm_up; ++k) step();
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < timed; ++k) step();
+  const double seconds = seconds_since(start);
+  for (int i = 0; i < b.size(); ++i) {
+    b.position[i] = {logs[i]->GetPosition().x, logs[i]->GetPosition().y};
+    b.angle[i] = logs[i]->GetAngle();
+  }
+  Result r = measure(scene);
+  r.ms_per_step = 1e3 * seconds / timed;
+  return r;
+}
+
+}  // namespace
+}  // namespace flotsam
+
+int main() {
+  using namespace flotsam;
+  std::printf("%7s %-8s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "largest [mm]",
+              "p99 [mm]", "past piers");
+  for (const int n : {1000, 10000, 50000}) {
+    JamSceneSpec spec;
+    spec.log_count = n;
+    spec.pier_count = std::max(2, n / 50 + 1);
+    spec.row_gap = 0.0;
+    const JamScene scene = make_jam_scene(spec);
+    const int warm_up = 100, timed = n >= 50000 ? 20 : 50;  // steps of 0.02 s
+    const Result f = run_flotsam(scene, warm_up, timed);
+    const Result b = run_box2d(scene, warm_up, timed);
+    for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"box2d", b}}) {
+      std::printf("%7d %-8s %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step, 1e3 * r.largest,
+                  1e3 * r.percentile_99, r.past_piers);
+    }
+    std::printf(
+        "%7d %-8s %12.2f %14.2f %14.2f   (flotsam: %.0f velocity sweeps per step, %.0f %% "
+        "of steps solved twice)\n",
+        n, "ratio", f.ms_per_step / b.ms_per_step, f.largest / b.largest,
+        f.percentile_99 / b.percentile_99, f.sweeps, 100.0 * f.second_solves);
+  }
+  return 0;
+}
