@@ -43,11 +43,7 @@ time: {end: 10, step: 0.5}
 
 // base_case with `from` replaced by `to` (`from` must occur).
 std::string edited(const std::string& from, const std::string& to) {
-  std::string text = base_case;
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
+  return test::replaced(base_case, from, to);
 }
 
 // base_case with `extra` appended (it starts on line 12).

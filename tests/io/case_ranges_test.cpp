@@ -29,10 +29,9 @@ time: {end: 10, step: 0.5}
 output: {interval: 2}
 )";
 
+// base_case with `from` replaced by `to` (`from` must occur).
 std::string edited(const std::string& from, const std::string& to) {
-  std::string text = base_case;
-  text.replace(text.find(from), from.size(), to);
-  return text;
+  return test::replaced(base_case, from, to);
 }
 
 using test::error_of;  // tests/support/case_error.hpp
