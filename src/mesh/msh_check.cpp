@@ -558,8 +558,9 @@ void read_elements(Cursor& in, MshFile& msh) {
 MshCounts check_msh_bytes(const std::string& path, std::string_view bytes) {
   Cursor in(path, bytes);
   MshFile msh;
-  if (in.peek_marker() != "MeshFormat")
-    in.fail("expected $MeshFormat on the file's first line (is it a Gmsh .msh file?)");
+  // Gmsh picks its reader by the first line: anything but $MeshFormat there is not an MSH file.
+  if (!bytes.starts_with("$MeshFormat") || in.peek_marker() != "MeshFormat")
+    in.fail("expected $MeshFormat alone on the file's first line (is it a Gmsh .msh file?)");
   in.start_marker();
   read_format(in, msh);
 
@@ -598,10 +599,10 @@ MshCounts check_msh_bytes(const std::string& path, std::string_view bytes) {
 }
 
 MshCounts check_msh(const std::string& path) {
-  if (!path.ends_with(".msh"))
+  if (!path.ends_with(".msh") && !path.ends_with(".msh2"))
     throw_input_error(
-        "{}: a Gmsh mesh file's name must end in .msh (Gmsh chooses its reader by "
-        "the name: another ending would be read as another format)",
+        "{}: a Gmsh mesh file's name must end in .msh or .msh2 (Gmsh chooses its "
+        "reader by the name: another ending may be read as another format)",
         path);
   std::ifstream file(path, std::ios::binary);
   if (!file)

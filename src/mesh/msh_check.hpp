@@ -6,11 +6,13 @@
 // files whose structure it has verified; anything else is an InputError naming the file, the line
 // (ASCII) or byte (binary) and what was expected there.
 //
-// Accepted: MSH 2.2 and 4.1 (what flotsam writes and documents), ASCII or binary (little-endian,
-// 8-byte size_t, as Gmsh writes on x86-64 and ARM), with the sections $MeshFormat (first),
-// $PhysicalNames, $Entities (4.1, before $Nodes), $Nodes and $Elements (after $Nodes), each at most
-// once and each closed by its $End line. Any other section ($Periodic, $NodeData, partitions, ...)
-// is refused: flotsam does not use them and Gmsh's readers of them trust their counts too.
+// Accepted: a name ending in .msh or .msh2 (Gmsh picks its reader by the name, then by the first
+// line), $MeshFormat on the first line, MSH 2.2 and 4.1 (what flotsam writes and documents), ASCII
+// or binary (little-endian, 8-byte size_t, as Gmsh writes on x86-64 and ARM), with the sections
+// $MeshFormat (first), $PhysicalNames, $Entities (4.1, before $Nodes), $Nodes and $Elements (after
+// $Nodes), each at most once and each closed by its $End line. Any other section ($Periodic,
+// $NodeData, partitions, ...) is refused: flotsam does not use them and Gmsh's readers of them
+// trust their counts too.
 //
 // Checked in every section: each number parses in full (an integer in its range, a finite real),
 // the declared counts match the entries, tags are positive and unique, node blocks hold no

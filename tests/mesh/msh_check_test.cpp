@@ -204,7 +204,8 @@ TEST(MshCheck, TruncatedBinaryFileIsRefusedNamingTheByte) {
 TEST(MshCheck, FileWhoseNameDoesNotEndInMshIsRefused) {
   TempFolder folder;
   const auto path = folder.write("square.geo", square_41);  // Gmsh would run it as a script
-  EXPECT_THAT(check_error(path), HasSubstr(path + ": a Gmsh mesh file's name must end in .msh"));
+  EXPECT_THAT(check_error(path),
+              HasSubstr(path + ": a Gmsh mesh file's name must end in .msh or .msh2"));
 }
 
 // Every file that crashed Gmsh 4.8's own parser is refused with a message naming it and a line.
