@@ -60,6 +60,19 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
 
+// What a value is, for messages: a format with up to two numbers, formatted only when a message
+// is made (a mesh holds millions of values).
+struct What {
+  What(const char* text) : format_(text) {}  // NOLINT: plain text converts
+  What(const char* format, long first, long second = 0)
+      : format_(format), first_(first), second_(second) {}
+  std::string text() const { return fmt::format(fmt::runtime(format_), first_, second_); }
+
+ private:
+  const char* format_;
+  long first_ = 0, second_ = 0;
+};
+
 // A read position in the file with the location of what it reads, for messages.
 class Cursor {
  public:
@@ -135,11 +148,11 @@ class Cursor {
   }
 
   // A line holding one integer (the count lines Gmsh reads with fgets).
-  long count_line(std::string_view what) {
+  long count_line(const What& what) {
     const std::string_view text = peek_line();
     long value = 0;
     if (!parse_integer(trim(text), value) || value < 0 || value > largest_count)
-      fail("expected {} alone on the next line (an integer from 0 to {}), got '{}'", what,
+      fail("expected {} alone on the next line (an integer from 0 to {}), got '{}'", what.text(),
            largest_count, shorten(text));
     rest_of_line();
     return value;
@@ -166,53 +179,53 @@ class Cursor {
   }
 
   // An integer Gmsh reads as int (4 bytes in binary).
-  long integer(std::string_view what, long lo, long hi) {
+  long integer(const What& what, long lo, long hi) {
     if (binary) return binary_integer<std::int32_t>(what, lo, hi);
     return text_integer(next_word(), what, lo, hi);
   }
 
   // An integer Gmsh reads as size_t (8 bytes in a binary 4.1 file).
-  long size(std::string_view what, long lo, long hi) {
+  long size(const What& what, long lo, long hi) {
     if (binary) return binary_integer<std::uint64_t>(what, lo, hi);
     return text_integer(next_word(), what, lo, hi);
   }
 
   // A finite real (8 bytes in binary).
-  double real(std::string_view what) {
+  double real(const What& what) {
     double value = 0.0;
     if (!binary) return text_real(next_word(), what);
     read_bytes(&value, sizeof value, what);
-    if (!std::isfinite(value)) fail("expected {} (a finite number), got {}", what, value);
+    if (!std::isfinite(value)) fail("expected {} (a finite number), got {}", what.text(), value);
     return value;
   }
 
-  double text_real(std::string_view word, std::string_view what) {
+  double text_real(std::string_view word, const What& what) {
     double value = 0.0;
     const std::string_view digits = word.substr(word.starts_with('+') ? 1 : 0);
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() ||
         !std::isfinite(value))
-      fail("expected {} (a finite number), got {}", what, quoted(word));
+      fail("expected {} (a finite number), got {}", what.text(), quoted(word));
     return value;
   }
 
   // An integer on the current line after spaces (an ASCII element's node tags).
-  long integer_on_line(std::string_view what, long lo, long hi) {
+  long integer_on_line(const What& what, long lo, long hi) {
     while (pos_ < bytes_.size() && bytes_[pos_] == ' ') ++pos_;
     const std::size_t start = pos_;
     while (pos_ < bytes_.size() && !is_space(bytes_[pos_])) ++pos_;
     if (start == pos_)
-      fail("expected {} on the same line, after spaces (Gmsh reads the line at once)", what);
+      fail("expected {} on the same line, after spaces (Gmsh reads the line at once)", what.text());
     return text_integer(bytes_.substr(start, pos_ - start), what, lo, hi);
   }
 
   // Nothing but blanks up to the end of the line.
-  void end_of_line(std::string_view what) {
+  void end_of_line(const What& what) {
     while (pos_ < bytes_.size() &&
            (bytes_[pos_] == ' ' || bytes_[pos_] == '\t' || bytes_[pos_] == '\r'))
       ++pos_;
     if (pos_ < bytes_.size() && bytes_[pos_] != '\n')
-      fail("expected the end of {}'s line, got '{}'", what, shorten(rest_of_line()));
+      fail("expected the end of {}'s line, got '{}'", what.text(), shorten(rest_of_line()));
   }
 
  private:
@@ -258,25 +271,25 @@ class Cursor {
   }
 
  public:
-  long text_integer(std::string_view word, std::string_view what, long lo, long hi) {
+  long text_integer(std::string_view word, const What& what, long lo, long hi) {
     long value = 0;
     if (!parse_integer(word, value) || value < lo || value > hi)
-      fail("expected {} (an integer from {} to {}), got {}", what, lo, hi, quoted(word));
+      fail("expected {} (an integer from {} to {}), got {}", what.text(), lo, hi, quoted(word));
     return value;
   }
 
  private:
   template <class T>
-  long binary_integer(std::string_view what, long lo, long hi) {
+  long binary_integer(const What& what, long lo, long hi) {
     T value{};
     read_bytes(&value, sizeof value, what);
     if (value < static_cast<T>(lo) || value > static_cast<T>(hi))
-      fail("expected {} (an integer from {} to {}), got {}", what, lo, hi, value);
+      fail("expected {} (an integer from {} to {}), got {}", what.text(), lo, hi, value);
     return static_cast<long>(value);
   }
 
-  void read_bytes(void* out, std::size_t n, std::string_view what) {
-    if (bytes_.size() - pos_ < n) fail("expected {}, got the end of the file", what);
+  void read_bytes(void* out, std::size_t n, const What& what) {
+    if (bytes_.size() - pos_ < n) fail("expected {}, got the end of the file", what.text());
     std::memcpy(out, bytes_.data() + pos_, n);
     pos_ += n;
   }
@@ -291,8 +304,15 @@ class Cursor {
 // What the sections read so far hold.
 struct MshFile {
   double version = 0.0;
-  std::set<long> entities[4];   // 4.1: entity tags by dimension
-  std::vector<long> node_tags;  // sorted once $Nodes is read
+  std::set<long> entities[4];      // 4.1: entity tags by dimension
+  std::vector<long> node_tags;     // sorted once $Nodes is read
+  std::vector<bool> node_defined;  // by tag, when the tags are dense enough (else binary search)
+
+  bool has_node(long tag) const {
+    if (!node_defined.empty())
+      return tag < static_cast<long>(node_defined.size()) && node_defined[tag];
+    return std::binary_search(node_tags.begin(), node_tags.end(), tag);
+  }
   std::vector<long> element_tags;
   MshCounts counts;
 };
@@ -362,26 +382,25 @@ void read_physical_names(Cursor& in) {
 void read_entities(Cursor& in, MshFile& msh) {
   long count[4];
   for (int dim = 0; dim < 4; ++dim)
-    count[dim] =
-        in.size(fmt::format("the number of entities of dimension {}", dim), 0, largest_count);
+    count[dim] = in.size(What("the number of entities of dimension {}", dim), 0, largest_count);
   for (int dim = 0; dim < 4; ++dim) {
     for (long i = 0; i < count[dim]; ++i) {
-      const long tag = in.integer(fmt::format("the tag of entity {} of dimension {}", i + 1, dim),
-                                  1, largest_tag);
+      const long tag =
+          in.integer(What("the tag of entity {} of dimension {}", i + 1, dim), 1, largest_tag);
       if (!msh.entities[dim].insert(tag).second)
         in.fail("entity {} of dimension {} is defined twice", tag, dim);
       for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
-        in.real(fmt::format("a coordinate of entity {}'s bounding box", tag));
+        in.real(What("a coordinate of entity {}'s bounding box", tag));
       const long physicals =
-          in.size(fmt::format("entity {}'s number of physical tags", tag), 0, largest_count);
+          in.size(What("entity {}'s number of physical tags", tag), 0, largest_count);
       for (long p = 0; p < physicals; ++p)
-        in.integer(fmt::format("a physical tag of entity {}", tag), -largest_tag, largest_tag);
+        in.integer(What("a physical tag of entity {}", tag), -largest_tag, largest_tag);
       if (dim == 0) continue;
       const long bounds =
-          in.size(fmt::format("entity {}'s number of bounding entities", tag), 0, largest_count);
+          in.size(What("entity {}'s number of bounding entities", tag), 0, largest_count);
       for (long b = 0; b < bounds; ++b) {
-        const long bound = in.integer(fmt::format("a bounding entity of entity {}", tag),
-                                      -largest_tag, largest_tag);
+        const long bound =
+            in.integer(What("a bounding entity of entity {}", tag), -largest_tag, largest_tag);
         if (!msh.entities[dim - 1].contains(std::abs(bound)))
           in.fail(
               "entity {} of dimension {} is bounded by entity {} of dimension {}, which "
@@ -394,9 +413,8 @@ void read_entities(Cursor& in, MshFile& msh) {
 
 // A 4.1 block header's entity: its dimension and tag, which $Entities must define.
 int block_entity(Cursor& in, const MshFile& msh, long block) {
-  const int dim =
-      static_cast<int>(in.integer(fmt::format("block {}'s entity dimension", block), 0, 3));
-  const long tag = in.integer(fmt::format("block {}'s entity tag", block), 1, largest_tag);
+  const int dim = static_cast<int>(in.integer(What("block {}'s entity dimension", block), 0, 3));
+  const long tag = in.integer(What("block {}'s entity tag", block), 1, largest_tag);
   if (!msh.entities[dim].contains(tag))
     in.fail("block {} belongs to entity {} of dimension {}, which $Entities does not define", block,
             tag, dim);
@@ -405,13 +423,13 @@ int block_entity(Cursor& in, const MshFile& msh, long block) {
 
 // Sorts `tags`, refuses a repeated one, and in 4.1 compares the smallest and largest with the
 // section's header.
-void check_tags(Cursor& in, std::vector<long>& tags, std::string_view what, long declared_min,
+void check_tags(Cursor& in, std::vector<long>& tags, const What& what, long declared_min,
                 long declared_max, bool declared) {
   std::sort(tags.begin(), tags.end());
   const auto twice = std::adjacent_find(tags.begin(), tags.end());
-  if (twice != tags.end()) in.fail("{} tag {} is defined twice", what, *twice);
+  if (twice != tags.end()) in.fail("{} tag {} is defined twice", what.text(), *twice);
   if (declared && !tags.empty() && (tags.front() != declared_min || tags.back() != declared_max))
-    in.fail("the header declares {} tags from {} to {}, the blocks hold {} to {}", what,
+    in.fail("the header declares {} tags from {} to {}, the blocks hold {} to {}", what.text(),
             declared_min, declared_max, tags.front(), tags.back());
 }
 
@@ -423,11 +441,11 @@ void read_nodes(Cursor& in, MshFile& msh) {
     const long max_tag = in.size("the largest node tag", 0, largest_tag);
     for (long b = 1; b <= blocks; ++b) {
       block_entity(in, msh, b);
-      in.integer(fmt::format("block {}'s parametric flag (0: flotsam reads no parametric "
-                             "coordinates; Gmsh: Mesh.SaveParametric = 0)",
-                             b),
+      in.integer(What("block {}'s parametric flag (0: flotsam reads no parametric "
+                      "coordinates; Gmsh: Mesh.SaveParametric = 0)",
+                      b),
                  0, 0);
-      const long n = in.size(fmt::format("block {}'s number of nodes", b), 0, largest_count);
+      const long n = in.size(What("block {}'s number of nodes", b), 0, largest_count);
       if (n > total - static_cast<long>(msh.node_tags.size()))
         in.fail("block {} holds {} nodes, more than the {} the header declares are left", b, n,
                 total - static_cast<long>(msh.node_tags.size()));
@@ -446,6 +464,11 @@ void read_nodes(Cursor& in, MshFile& msh) {
     check_tags(in, msh.node_tags, "node", 0, 0, false);
   }
   msh.counts.nodes = msh.node_tags.size();
+  const long largest = msh.node_tags.empty() ? 0 : msh.node_tags.back();
+  if (largest <= 8 * static_cast<long>(msh.node_tags.size()) + 1024) {  // at most 8 bits a node
+    msh.node_defined.assign(largest + 1, false);
+    for (long tag : msh.node_tags) msh.node_defined[tag] = true;
+  }
 }
 
 // One element's tag and node tags (on one line in ASCII), its type's count updated.
@@ -454,14 +477,14 @@ void read_element(Cursor& in, MshFile& msh, const ElementType& type, bool size_t
                              : in.integer("an element tag", 1, largest_tag);
   msh.element_tags.push_back(tag);
   for (int k = 0; k < type.nodes; ++k) {
-    const std::string what = fmt::format("node {} of element {}", k + 1, tag);
+    const What what("node {} of element {}", k + 1, tag);
     const long node =
         in.binary ? (size_tags ? in.size(what, 1, largest_tag) : in.integer(what, 1, largest_tag))
                   : in.integer_on_line(what, 1, largest_tag);
-    if (!std::binary_search(msh.node_tags.begin(), msh.node_tags.end(), node))
+    if (!msh.has_node(node))
       in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
   }
-  if (!in.binary) in.end_of_line(fmt::format("element {}", tag));
+  if (!in.binary) in.end_of_line(What("element {}", tag));
   if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
   if (type.type == 1 || type.type == 8) ++msh.counts.lines;
 }
@@ -487,11 +510,11 @@ void read_elements(Cursor& in, MshFile& msh) {
     for (long b = 1; b <= blocks; ++b) {
       const int dim = block_entity(in, msh, b);
       const ElementType& type =
-          known_type(in, in.integer(fmt::format("block {}'s element type", b), 1, largest_tag));
+          known_type(in, in.integer(What("block {}'s element type", b), 1, largest_tag));
       if (type.dim != dim)
         in.fail("block {} holds elements of type {} (dimension {}) in an entity of dimension {}", b,
                 type.type, type.dim, dim);
-      const long n = in.size(fmt::format("block {}'s number of elements", b), 0, largest_count);
+      const long n = in.size(What("block {}'s number of elements", b), 0, largest_count);
       if (n > left(total))
         in.fail("block {} holds {} elements, more than the {} the header declares are left", b, n,
                 left(total));
@@ -506,9 +529,8 @@ void read_elements(Cursor& in, MshFile& msh) {
     // 2.2 ASCII: tag type 2 physical elementary nodes...; binary: blocks of one type with the
     // header type, count, 2 (tags), then tag physical elementary nodes... per element.
     const auto tags = [&](long element) {
-      in.integer(
-          fmt::format("the number of tags of element {} (2: physical and elementary)", element), 2,
-          2);
+      in.integer(What("the number of tags of element {} (2: physical and elementary)", element), 2,
+                 2);
     };
     while (left(total) > 0) {
       if (in.binary) {
@@ -519,12 +541,11 @@ void read_elements(Cursor& in, MshFile& msh) {
         for (long i = 0; i < n; ++i) {
           const long tag = in.integer("an element tag", 1, largest_tag);
           msh.element_tags.push_back(tag);
-          in.integer(fmt::format("element {}'s physical tag", tag), 0, largest_tag);
-          in.integer(fmt::format("element {}'s elementary tag", tag), 1, largest_tag);
+          in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
+          in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
           for (int k = 0; k < type.nodes; ++k) {
-            const long node =
-                in.integer(fmt::format("node {} of element {}", k + 1, tag), 1, largest_tag);
-            if (!std::binary_search(msh.node_tags.begin(), msh.node_tags.end(), node))
+            const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
+            if (!msh.has_node(node))
               in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
           }
           if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
@@ -534,14 +555,13 @@ void read_elements(Cursor& in, MshFile& msh) {
         const long tag = in.integer("an element tag", 1, largest_tag);
         msh.element_tags.push_back(tag);
         const ElementType& type =
-            known_type(in, in.integer(fmt::format("element {}'s type", tag), 1, largest_tag));
+            known_type(in, in.integer(What("element {}'s type", tag), 1, largest_tag));
         tags(tag);
-        in.integer(fmt::format("element {}'s physical tag", tag), 0, largest_tag);
-        in.integer(fmt::format("element {}'s elementary tag", tag), 1, largest_tag);
+        in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
+        in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
         for (int k = 0; k < type.nodes; ++k) {
-          const long node =
-              in.integer(fmt::format("node {} of element {}", k + 1, tag), 1, largest_tag);
-          if (!std::binary_search(msh.node_tags.begin(), msh.node_tags.end(), node))
+          const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
+          if (!msh.has_node(node))
             in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
         }
         if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
