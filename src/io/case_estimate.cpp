@@ -71,9 +71,10 @@ std::string describe_estimate(const RunEstimate& e) {
 void check_estimate(const Case& c, const RunEstimate& e) {
   if (e.elements <= largest_mesh) return;
   if (e.counted)
-    throw_input_error("{}: mesh.file: '{}' holds {:.0f} triangles, more than {:.0e} (several GB of "
-                      "memory before the first step)",
-                      c.file.empty() ? "case" : c.file, c.mesh.file, e.elements, largest_mesh);
+    throw_input_error(
+        "{}: mesh.file: '{}' holds {:.0f} triangles, more than {:.0e} (several GB of "
+        "memory before the first step)",
+        c.file.empty() ? "case" : c.file, c.mesh.file, e.elements, largest_mesh);
   throw_input_error(
       "{}: mesh: the domain and its mesh_size make about {:.2g} elements, more than {:.0e} "
       "(several GB of memory, hours of meshing); give a larger mesh_size",

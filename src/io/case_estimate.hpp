@@ -1,7 +1,8 @@
 #pragma once
 // How large a run will be, from its case alone, before anything is meshed or computed (issue 20
 // item 4): elements from the domain's area and mesh size (or counted in the mesh file), flow
-// steps, outputs and the bytes they take. `flotsam run` prints it when the run is large, and refuses a mesh too large for memory.
+// steps, outputs and the bytes they take. `flotsam run` prints it when the run is large, and
+// refuses a mesh too large for memory.
 #include <string>
 
 #include "io/case.hpp"
