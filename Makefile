@@ -8,10 +8,7 @@ BUILD     ?= build
 SAN_BUILD ?= build-sanitize
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
-# The mesh reader's target is built but not run by default: Debian 12's Gmsh 4.8 crashes inside
-# its own MSH 4 parser on some damaged files (tests/fuzz/gmsh_crashes); FUZZ_TARGETS="case mesh"
-# runs it too.
-FUZZ_TARGETS ?= case
+FUZZ_TARGETS ?= case mesh
 JOBS      ?= $(shell nproc)
 CI        ?=
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "mesh/msh_check.hpp"
 #include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
@@ -41,8 +42,13 @@ std::pair<double, double> area_and_size(const MeshSource& m) {
 
 RunEstimate estimate_run(const Case& c) {
   RunEstimate e;
-  const auto [area, size] = area_and_size(c.mesh);
-  e.elements = area / (triangle_factor * size * size);
+  if (c.mesh.kind == MeshSource::Kind::file) {
+    e.elements = static_cast<double>(check_msh(c.mesh.file).triangles);
+    e.counted = true;
+  } else {
+    const auto [area, size] = area_and_size(c.mesh);
+    e.elements = area / (triangle_factor * size * size);
+  }
   e.steps = std::ceil(c.time.end / c.time.step);
   e.outputs = std::floor(c.time.end / c.output.interval) + 1.0;
   e.output_bytes = e.outputs * e.elements * bytes_per_element;
@@ -55,7 +61,8 @@ bool is_large(const RunEstimate& e) {
 
 std::string describe_estimate(const RunEstimate& e) {
   const std::string elements =
-      e.elements > 0.0 ? fmt::format("about {:.2g} elements, ", e.elements) : "";
+      e.counted ? fmt::format("{:.0f} elements, ", e.elements)
+                : (e.elements > 0.0 ? fmt::format("about {:.2g} elements, ", e.elements) : "");
   return fmt::format(
       "{}{:.6g} steps, {:.6g} outputs{}", elements, e.steps, e.outputs,
       e.output_bytes > 0.0 ? fmt::format(", about {:.2g} GB of output", e.output_bytes / 1e9) : "");
@@ -63,6 +70,11 @@ std::string describe_estimate(const RunEstimate& e) {
 
 void check_estimate(const Case& c, const RunEstimate& e) {
   if (e.elements <= largest_mesh) return;
+  if (e.counted)
+    throw_input_error(
+        "{}: mesh.file: '{}' holds {:.0f} triangles, more than {:.0e} (several GB of "
+        "memory before the first step)",
+        c.file.empty() ? "case" : c.file, c.mesh.file, e.elements, largest_mesh);
   throw_input_error(
       "{}: mesh: the domain and its mesh_size make about {:.2g} elements, more than {:.0e} "
       "(several GB of memory, hours of meshing); give a larger mesh_size",

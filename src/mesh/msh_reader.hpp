@@ -15,7 +15,8 @@
 namespace flotsam {
 
 /// The mesh of `path` as plain lists, in the file's numbering. Throws InputError naming the
-/// file when it is missing or unreadable, when Gmsh cannot parse it, when it holds surface
+/// file when it is missing or unreadable, when its structure is damaged (check_msh, before Gmsh
+/// sees it; with the line or byte), when Gmsh cannot parse it, when it holds surface
 /// elements other than 3- or 6-node triangles, or when it has no triangles.
 RawMesh read_msh_raw(const std::string& path);
 

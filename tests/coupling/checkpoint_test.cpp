@@ -14,6 +14,7 @@
 #include <regex>
 #include <sstream>
 
+#include "../support/case_error.hpp"
 #include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
@@ -102,6 +103,40 @@ TEST(Checkpoint, RestartRefusesAnEditedCaseNamingEachKey) {
   // Writing a default value out is a change too: the case is not the same text.
   EXPECT_THAT(restart_error(edited_case("mode: two-way}", "mode: two-way, scheme: theta}"), folder),
               HasSubstr("time.scheme: added (theta)"));
+}
+
+// Each edit a user makes between a run and its restart (issue 20 item 1): physics, numerics,
+// boundaries, bodies, contacts, releases and their seeds. Each is refused with its key and two
+// values; the case carries a release line here, so that its seed can change.
+TEST(Checkpoint, RestartRefusesEveryKindOfEditNamingTheKey) {
+  const std::string with_release = test::replaced(
+      case_text, "bodies:\n  list:",
+      "bodies:\n  release:\n    - {line: [[20, 5], [20, 15]], rate: 30, end: 3, seed: 3}\n"
+      "  list:");
+  const fs::path folder = test::fresh_test_folder("checkpoint");
+  {
+    Case c = parse_case(with_release, "edited.yaml");
+    c.time.end = 2.0;
+    Simulation(std::move(c), channel_mesh(), {.output_directory = folder, .progress = false}).run();
+  }
+  const struct {
+    std::string from, to, message;
+  } edits[] = {
+      {"coefficient: 0.03", "coefficient: 0.04", "flow.friction.coefficient: 0.03 then, 0.04 now"},
+      {"step: 1,", "step: 0.5,", "time.step: 1 then, 0.5 now"},
+      {"mode: two-way", "mode: one-way", "time.mode: two-way then, one-way now"},
+      {"value: 2}", "value: 2.5}", "flow.boundaries.right.value: 2 then, 2.5 now"},
+      {"  viscosity:", "  gravity: 9.8\n  viscosity:", "flow.gravity: added (9.8)"},
+      {"  release:", "  contact: {restitution: 0.5}\n  release:",
+       "bodies.contact.restitution: added (0.5)"},
+      {"seed: 3", "seed: 4", "bodies.release[0].seed: 3 then, 4 now"},
+  };
+  for (const auto& edit : edits) {
+    SCOPED_TRACE(edit.message);
+    const Case edited = parse_case(test::replaced(with_release, edit.from, edit.to), "edited.yaml");
+    EXPECT_THAT(restart_error(edited, folder), HasSubstr(edit.message));
+  }
+  EXPECT_EQ(restart_error(parse_case(with_release, "edited.yaml"), folder), "");  // unchanged
 }
 
 TEST(Checkpoint, RestartTakesALaterEndAndOutputChangesOnlyWhenAsked) {

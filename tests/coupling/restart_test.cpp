@@ -100,6 +100,14 @@ TEST(Restart, ContinuesToTheSameEndStateBitForBit) {
   fs::remove_all(base);
 }
 
+/// The lines of a text file.
+std::vector<std::string> lines_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
 const char* const tables[] = {"restart_bodies.csv", "restart_balance.csv", "restart_jams.csv",
                               "restart_probes.csv"};
 
@@ -107,8 +115,11 @@ RunOptions options_in(const fs::path& dir, bool restart) {
   return {.output_directory = dir, .progress = false, .restart = restart};
 }
 
-// A run killed after it wrote the tables of its output at 8 s but before it replaced the
-// checkpoint of 4 s: the restart drops the rows of 8 s and later, and writes them once.
+// A run killed while it wrote its output at 8 s: after its tables and fields, while it wrote the
+// new checkpoint (a cut checkpoint.bin.part and a cut field file beside the checkpoint of 4 s).
+// The restart drops the tables' rows of 8 s and later and writes them once: every table and
+// every other file of the restarted run (fields, states, indexes, checkpoint) equals the
+// uninterrupted run's, line by line.
 TEST(Restart, RewindsEveryTableToTheCheckpoint) {
   const fs::path base = test::fresh_test_folder("restart");
   const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
@@ -117,20 +128,27 @@ TEST(Restart, RewindsEveryTableToTheCheckpoint) {
   Simulation(restart_case(4.0), mesh, options_in(split, false)).run();
   fs::copy_file(split / "checkpoint.bin", base / "checkpoint_4s.bin");
   Simulation(restart_case(8.0), mesh, options_in(split, true)).run();
+  const std::string checkpoint_8s = text_of(split / "checkpoint.bin");
+  std::ofstream(split / "checkpoint.bin.part") << checkpoint_8s.substr(0, 100);
+  std::ofstream(split / "flow_000002.vtu.part") << "<?xml";
   fs::copy_file(base / "checkpoint_4s.bin", split / "checkpoint.bin",
                 fs::copy_options::overwrite_existing);
   Simulation rest(restart_case(12.0), mesh, options_in(split, true));
   rest.run();
   for (const char* table : tables)
-    EXPECT_EQ(text_of(split / table), text_of(base / "whole" / table)) << table;
-}
-
-/// The lines of a text file.
-std::vector<std::string> lines_of(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
+    EXPECT_EQ(lines_of(split / table), lines_of(base / "whole" / table)) << table;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(base / "whole")) {
+    const fs::path name = entry.path().filename();
+    EXPECT_TRUE(fs::exists(split / name)) << name;
+    EXPECT_EQ(lines_of(split / name), lines_of(entry.path())) << name;
+    ++files;
+  }
+  // Flow fields, bodies and states at 0, 4, 8, 12 s, 4 tables, 2 indexes, the boundary, run.bin,
+  // the checkpoint and the folder's marker.
+  EXPECT_EQ(files, 3 * 4 + 4 + 2 + 4);
+  for (const auto& entry : fs::directory_iterator(split))
+    EXPECT_NE(entry.path().extension(), ".part") << entry.path();
 }
 
 // A table removed before a restart is written again: its header, then the rows after the

@@ -1,5 +1,7 @@
-// Fuzzes the mesh reader (mesh/msh_reader.hpp, Gmsh's parser and build_mesh's checks): any file
-// is a mesh or an InputError, never a crash or another exception.
+// Fuzzes the mesh reader (mesh/msh_reader.hpp: the structure check of mesh/msh_check.hpp, then
+// Gmsh's parser on what passed it, then build_mesh's checks): any file is a mesh or an InputError,
+// never a crash or another exception. The corpus holds one small mesh in each of the four MSH
+// flavours (2.2 / 4.1, ASCII / binary).
 #include <unistd.h>
 
 #include <cstddef>

@@ -5,7 +5,9 @@
 
 #include <filesystem>
 
+#include "../support/file_size_limit.hpp"
 #include "../support/scratch_path.hpp"
+#include "core/error.hpp"
 #include "core/vec.hpp"
 
 namespace flotsam {
@@ -38,6 +40,24 @@ TEST(BinaryArchive, RoundTripIsBitExact) {
   EXPECT_EQ(r.read_value<long>("step"), 42L);
   EXPECT_EQ(r.read_text("note"), "hello");
   std::filesystem::remove(path);
+}
+
+// A checkpoint or state write that fails (a full disk, imitated by a file size limit) stops with
+// the file named and leaves no .part file behind (issue 20 item 5).
+TEST(BinaryArchive, AFailedWriteLeavesNoPartFile) {
+  const std::string path = temp_file("flotsam_archive_full.bin");
+  const std::vector<double> x(10000, 1.0);  // 80 kB
+  try {
+    const test::FileSizeLimit full_disk(4096);  // [bytes]
+    ArchiveWriter w(path);
+    w.write("x", x);
+    w.close();
+    ADD_FAILURE() << "the write past the limit succeeded";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("cannot write '" + path + "'"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".part"));
 }
 
 TEST(BinaryArchive, WrongRecordOrTruncationIsAnErrorNamingTheFile) {

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "../support/case_error.hpp"
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
@@ -85,6 +88,29 @@ TEST(CaseEstimate, CountsElementsStepsAndOutputs) {
     EXPECT_THAT(error.what(), ::testing::StartsWith("case.yaml: mesh: the domain and its mesh_size "
                                                     "make about 4.6e+09 elements"));
   }
+}
+
+// A mesh file's triangles are counted in the file (mesh/msh_check.hpp) before it is read: two
+// triangles, four lines and a point in a hand-written MSH 2.2 file.
+TEST(CaseEstimate, CountsTheTrianglesOfAMeshFile) {
+  const auto folder = test::fresh_test_folder("flotsam_case_estimate");
+  const std::string path = (folder / "square.msh").string();
+  std::ofstream(path) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n"
+                         "3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n7\n1 15 2 0 1 1\n"
+                         "2 1 2 1 1 1 2\n3 1 2 1 1 2 3\n4 1 2 1 1 3 4\n5 1 2 1 1 4 1\n"
+                         "6 2 2 2 1 1 2 3\n7 2 2 2 1 1 3 4\n$EndElements\n";
+  Case c = parse_case(base_case, "case.yaml");
+  c.mesh.kind = MeshSource::Kind::file;
+  c.mesh.file = path;
+  const RunEstimate e = estimate_run(c);
+  EXPECT_TRUE(e.counted);
+  EXPECT_EQ(e.elements, 2.0);
+  EXPECT_EQ(e.steps, 20.0);
+  EXPECT_EQ(e.outputs, 6.0);
+  EXPECT_EQ(describe_estimate(e), "2 elements, 20 steps, 6 outputs, about 7.2e-06 GB of output");
+  std::ofstream(path, std::ios::app) << "$Periodic\n0\n$EndPeriodic\n";  // damaged: refused
+  EXPECT_THROW(estimate_run(c), InputError);
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // other with no gap up to </AppendedData>, and the arrays read back hold the mesh, the fields
 // and the bodies exactly (binary doubles: bit for bit). VTK's own reader checks the same files
 // in tests/scripts/check_vtk.py.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/file_size_limit.hpp"
 #include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "io/vtk_writer.hpp"
@@ -151,6 +153,25 @@ TEST(VtuWriter, DeclaredSizesMatchTheAppendedBlocks) {
   EXPECT_EQ(file.array("g").bytes.size(), 15u * 8);  // P1 written on all P2 nodes
   EXPECT_EQ(file.array("c").bytes.size(), 4u * 8);
   EXPECT_EQ(file.values<double>("TimeValue"), std::vector<double>{12.5});
+  EXPECT_FALSE(fs::exists(path.string() + ".part"));
+}
+
+// A write that fails (a full disk, imitated by a file size limit) stops with the file named and
+// leaves neither the file nor its .part behind (issue 20 item 5).
+TEST(VtuWriter, AFailedWriteLeavesNoPartFile) {
+  const Mesh mesh = small_mesh();
+  std::vector<double> f(15, 1.0);
+  VtuFields fields;
+  fields.add_point_scalar("f [m]", f);
+  const fs::path path = scratch_folder() / "full.vtu";
+  try {
+    const test::FileSizeLimit full_disk(512);  // [bytes] the file takes about 3 kB
+    write_vtu(path.string(), mesh, fields, 0.0);
+    ADD_FAILURE() << "the write past the limit succeeded";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), ::testing::StartsWith("cannot write '" + path.string()));
+  }
+  EXPECT_FALSE(fs::exists(path));
   EXPECT_FALSE(fs::exists(path.string() + ".part"));
 }
 

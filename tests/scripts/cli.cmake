@@ -88,3 +88,43 @@ if(FLOTSAM_VALGRIND)
   set_tests_properties(cli.checkpoint_has_no_uninitialised_bytes PROPERTIES LABELS "cli"
                        ENVIRONMENT "${test_environment}")
 endif()
+
+# A large run is announced before it starts (issue 20 item 4), its elements counted in the mesh
+# file it reads (the paper's channel: 4,468 triangles); the restart then stops it (no checkpoint).
+file(WRITE ${cli_work}/large_run.yaml "name: large
+mesh: {file: bridge.msh}
+flow:
+  initial: {eta: 4}
+  boundaries:
+    inflow: {type: elevation, value: 4}
+    outflow: {type: elevation, value: 4}
+    bank_right: {type: wall}
+    bank_left: {type: wall}
+    pier_1: {type: wall}
+    pier_2: {type: wall}
+    pier_3: {type: wall}
+    pier_4: {type: wall}
+time: {end: 2000000, step: 1}
+output: {interval: 1000}
+")
+flotsam_cli_test(run_announces_a_large_run nonzero
+                 "flotsam: a large run: 4468 elements, 2e\\+06 steps, 2001 outputs"
+                 run large_run.yaml -o large_run_no_checkpoint --restart -q)
+set_tests_properties(cli.run_announces_a_large_run PROPERTIES FIXTURES_REQUIRED cli_mesh)
+
+# Bodies placed on top of each other are named in a warning (issue 20 item 6).
+file(READ ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml overlap_text)
+string(REPLACE "x: 110, y: 40" "x: 101, y: 20" overlap_text "${overlap_text}")
+file(WRITE ${cli_work}/tiny_overlap.yaml "${overlap_text}")
+flotsam_cli_test(run_names_overlapping_bodies 0 "bodies 0 and 1 overlap by [0-9.]+ m where"
+                 run tiny_overlap.yaml -o tiny_overlap --end 1 --overwrite -q)
+
+# `make demo` builds only the program it runs, not the test programs (issue 20 item 8): the one
+# `cmake --build` of its recipe names the target flotsam.
+add_test(NAME make.demo_builds_only_the_program
+         COMMAND bash -c "recipe=$(make -n -C ${PROJECT_SOURCE_DIR} demo BUILD=${CMAKE_BINARY_DIR}); \
+                          builds=$(grep -c 'cmake --build' <<< \"$recipe\"); \
+                          flotsam=$(grep -cE -- '--target flotsam( |$)' <<< \"$recipe\"); \
+                          echo \"cmake --build steps: $builds, of the target flotsam: $flotsam\"; \
+                          [ $builds = 1 ] && [ $flotsam = 1 ]")
+set_tests_properties(make.demo_builds_only_the_program PROPERTIES LABELS "cli")
