@@ -1,10 +1,11 @@
 #include "bodies/release.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 #include <limits>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -213,10 +214,14 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
       spec.density = uniform(line.random, rel.density_min, rel.density_max);
       ++line.count;
       // A body that does not fit where it is drawn (a long log across a bank near the line's
-      // end, a car on one parked before it) is drawn again in position and angle; only when
-      // none of the tries fits is the release an error.
+      // end, or on a log released before it that has not yet drifted off the line) is drawn
+      // again in position and angle. When none of the tries fits, a count is an error; a body
+      // released at a rate waits, and is drawn again at the next flow step: the water brings
+      // no log onto another, and the contacts would push the two apart at once, through a bank
+      // if one is near.
       constexpr int tries = 100;
-      for (int attempt = 1;; ++attempt) {
+      bool placed = false, fits_the_walls = false;
+      for (int attempt = 1; !placed; ++attempt) {
         spec.position = draw_position(static_cast<int>(r), line);
         spec.angle = uniform(line.random, rel.angle_min_deg, rel.angle_max_deg) * pi / 180.0;
         const std::string what =
@@ -224,11 +229,23 @@ int Releaser::release(BodySet& bodies, const FlowField& flow, double /*t0*/, dou
                         t_k, attempt);
         try {
           check_body_placement(spec, flow, t_k, check_, what);
-          if (rel.count > 0) check_clear_of_bodies(spec, bodies, check_, what);
-          break;
+          fits_the_walls = true;
+          check_clear_of_bodies(spec, bodies, check_, what);
+          placed = true;
         } catch (const InputError&) {
-          if (attempt == tries) throw;
+          if (attempt < tries) continue;
+          if (rel.count > 0 || !fits_the_walls) throw;
+          break;
         }
+      }
+      if (!placed) {  // waits for room on its line
+        if (waits_++ == 0)
+          spdlog::warn(
+              "{}: body {} due at t = {} s finds no room clear of the bodies released "
+              "before it; it waits for the next flow step (said once per run)",
+              location(static_cast<int>(r)), line.count - 1, t_k);
+        --line.count;
+        break;
       }
       bodies.add(spec);
       ++released_now;

@@ -56,12 +56,16 @@ class Releaser {
   /// Appends the bodies whose release times fall in [t0, t1) (and any earlier one not yet
   /// released): t_k = start + k 60/rate (k = 0, 1, ..., t_k <= end), or t_k = start for the
   /// `count` bodies of a count. Each is placed at rest at a uniform point of its line or zone
-  /// (a zone's by rejection in its bounding box) with uniform L, l, density and angle. Returns
-  /// how many were released.
+  /// (a zone's by rejection in its bounding box) with uniform L, l, density and angle, clear of
+  /// the walls and of every body (100 tries; then a count is an error, and a body due at a rate
+  /// waits for the next call). Returns how many were released.
   int release(BodySet& bodies, const FlowField& flow, double t0, double t1);
 
   /// Bodies released so far by release r.
   long released(int r) const { return lines_[r].count; }
+  /// Flow steps at which a body due at a rate found no room on its line or zone (every try
+  /// overlapped a body released before it) and waited for the next step.
+  long waits() const { return waits_; }
 
   /// The random streams and counts as text, and back (checkpoints: a restarted run releases
   /// the same bodies).
@@ -84,6 +88,7 @@ class Releaser {
 
   std::vector<Line> lines_;
   PlacementCheck check_;
+  long waits_ = 0;
 };
 
 }  // namespace flotsam
