@@ -244,15 +244,27 @@ void ContactWorld::match_previous_points() {
 // steady force then does not creep into its supports by F h^2 / m per interval. h must be the
 // interval the bodies have just been moved over, not a longer step: the move would otherwise
 // be too long by the ratio (and a bounce could carry a body through a wall).
+// Each island is solved on its own, the islands in parallel (contact/islands.hpp).
 void ContactWorld::solve(BodySet& bodies, double interval) {
   Stopwatch clock;
   masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
   match_previous_points();
   prepare_contacts(contacts_, bodies, masses_, config_, interval);
+  islands_.group(contacts_, bodies.size());
+  profile_.islands = islands_.count();
+  profile_.largest_island = islands_.largest();
   velocity_before_ = bodies.velocity;
   angular_velocity_before_ = bodies.angular_velocity;
-  warm_start_contacts(contacts_, bodies, masses_);
-  profile_.velocity_sweeps = solve_contact_velocities(contacts_, bodies, masses_, config_);
+  const std::vector<int>& order = islands_.largest_first();
+  const int count = islands_.count();
+  int sweeps = 0;
+#pragma omp parallel for schedule(dynamic) reduction(max : sweeps) if (in_parallel())
+  for (int k = 0; k < count; ++k) {
+    const std::span<ContactConstraint> island = islands_.island(contacts_, order[k]);
+    warm_start_contacts(island, bodies, masses_);
+    sweeps = std::max(sweeps, solve_contact_velocities(island, bodies, masses_, config_));
+  }
+  profile_.velocity_sweeps = sweeps;
   for (int i = 0; i < bodies.size(); ++i) {
     bodies.position[i] += interval * (bodies.velocity[i] - velocity_before_[i]);
     bodies.angle[i] += interval * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
@@ -260,10 +272,25 @@ void ContactWorld::solve(BodySet& bodies, double interval) {
   profile_.solve = clock.lap();
 }
 
+// Each island stops its sweeps once its own overlaps are within the slop.
 void ContactWorld::correct_positions(BodySet& bodies) {
   Stopwatch clock;
-  profile_.largest_overlap = correct_contact_positions(contacts_, bodies, masses_, config_);
+  const std::vector<int>& order = islands_.largest_first();
+  const int count = islands_.count();
+  double worst = 0.0;  // [m]
+#pragma omp parallel for schedule(dynamic) reduction(max : worst) if (in_parallel())
+  for (int k = 0; k < count; ++k) {
+    worst = std::max(worst, correct_contact_positions(islands_.island(contacts_, order[k]), bodies,
+                                                      masses_, config_));
+  }
+  profile_.largest_overlap = worst;
   profile_.positions = clock.lap();
+}
+
+// Threads pay off from a few hundred contacts (a parallel region costs a few microseconds).
+bool ContactWorld::in_parallel() const {
+  constexpr std::size_t parallel_contacts = 256;  // [-]
+  return contacts_.size() >= parallel_contacts && islands_.count() > 1;
 }
 
 ContactReport ContactWorld::report(const BoundarySegments& walls, int body_count) const {

@@ -1,8 +1,8 @@
 #pragma once
 // The contact stage of a body step (spec 4): one call reads as the pipeline
 //
-//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (impulses)
-//   -> correct_positions
+//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (islands,
+//   impulses) -> correct_positions
 //
 // each stage timed into ContactProfile, as Box2D's b2World_Step. The world keeps what makes the
 // next step cheap: the sweep order, and last step's impulses to warm-start the solver.
@@ -13,23 +13,26 @@
 #include "contact/boundary_segments.hpp"
 #include "contact/contact_report.hpp"
 #include "contact/impulse_solver.hpp"
+#include "contact/islands.hpp"
 #include "contact/sweep_and_prune.hpp"
 #include "io/case.hpp"
 
 namespace flotsam {
 
 struct ContactProfile {
-  double boxes = 0.0;           // [s] bounding boxes
-  double broad_phase = 0.0;     // [s] body pairs and body-wall candidates
-  double narrow_phase = 0.0;    // [s] manifolds
-  double solve = 0.0;           // [s] impulses
-  double positions = 0.0;       // [s] position correction
-  int body_pairs = 0;           // candidate body pairs from the broad phase
-  int wall_pairs = 0;           // candidate (body, segment) pairs
-  int contacts = 0;             // manifolds with at least one point
-  int points = 0;               // contact points
-  int warm_started_points = 0;  // points matched to one of the last step's
-  int velocity_sweeps = 0;
+  double boxes = 0.0;            // [s] bounding boxes
+  double broad_phase = 0.0;      // [s] body pairs and body-wall candidates
+  double narrow_phase = 0.0;     // [s] manifolds
+  double solve = 0.0;            // [s] impulses
+  double positions = 0.0;        // [s] position correction
+  int body_pairs = 0;            // candidate body pairs from the broad phase
+  int wall_pairs = 0;            // candidate (body, segment) pairs
+  int contacts = 0;              // manifolds with at least one point
+  int points = 0;                // contact points
+  int warm_started_points = 0;   // points matched to one of the last step's
+  int velocity_sweeps = 0;       // the most any island took
+  int islands = 0;               // groups of bodies joined by contacts (contact/islands.hpp)
+  int largest_island = 0;        // contacts in the largest island
   double largest_overlap = 0.0;  // [m] after position correction
   int second_solves = 0;         // 1 when the interval was solved again with grown margins
 };
@@ -78,6 +81,7 @@ class ContactWorld {
   bool grow_reach(const BodySet& bodies, double interval);
   void undo_solve(BodySet& bodies, double interval);
   void correct_positions(BodySet& bodies);
+  bool in_parallel() const;
 
   ContactConfig config_;
   double added_mass_coefficient_;  // C_a [-], used when config_.added_mass_in_contact
@@ -89,6 +93,7 @@ class ContactWorld {
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
   SolverMasses masses_;
+  Islands islands_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
   std::vector<double> reach_;  // [m] per body, added to its detection margin (see step())
