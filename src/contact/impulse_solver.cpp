@@ -124,8 +124,10 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
 }
 
 void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config, double interval) {
+                      const SolverMasses& masses, const ContactConfig& config,
+                      const std::vector<double>& intervals) {
   for (ContactConstraint& c : contacts) {
+    const double interval = c.b >= 0 ? std::max(intervals[c.a], intervals[c.b]) : intervals[c.a];
     const Vec2 tangent = -perp(c.normal);
     for (int k = 0; k < c.point_count; ++k) {
       ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];

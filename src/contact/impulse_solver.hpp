@@ -82,10 +82,12 @@ struct SolverMasses {
 SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
                                 double added_mass_coefficient);
 
-/// Fills the effective masses, approach and target velocities of every point; `interval` h [s]
-/// is the time over which the solved velocities will move the bodies (speculative target).
+/// Fills the effective masses, approach and target velocities of every point; `intervals[i]` h
+/// [s] is the time over which the solved velocities will move body i (speculative target: the
+/// longer of the two bodies').
 void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config, double interval);
+                      const SolverMasses& masses, const ContactConfig& config,
+                      const std::vector<double>& intervals);
 
 /// Applies the accumulated impulses the points start with (warm start from the last step).
 void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& bodies,
