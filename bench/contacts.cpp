@@ -6,7 +6,8 @@
 //   cmake --build <build> --target bench_contacts
 //   <build>/bench/bench_contacts --benchmark_min_time=0.3
 //
-// Counters: contacts (manifolds), sweeps (velocity sweeps of the last step), and the share of
+// Counters: contacts (manifolds), sweeps (velocity sweeps of the last step, the most an island
+// took), islands and the contacts of the largest, and the share of
 // each stage in the step (boxes, broad, narrow, solve, positions [ms]). Figures:
 // docs/performance.md, "Contacts".
 #include <benchmark/benchmark.h>
@@ -49,6 +50,8 @@ void BM_ContactStep(benchmark::State& state) {
   const double n = static_cast<double>(state.iterations());
   state.counters["contacts"] = world.profile().contacts;
   state.counters["sweeps"] = world.profile().velocity_sweeps;
+  state.counters["islands"] = world.profile().islands;
+  state.counters["largest_island"] = world.profile().largest_island;
   state.counters["broad_ms"] = 1e3 * (total.boxes + total.broad_phase) / n;
   state.counters["narrow_ms"] = 1e3 * total.narrow_phase / n;
   state.counters["solve_ms"] = 1e3 * total.solve / n;

@@ -32,6 +32,7 @@ struct Result {
   int past_piers = 0;          // logs whose centre is downstream of the piers' line
   double sweeps = 0.0;         // flotsam: mean velocity sweeps per step (its cap: 200)
   double second_solves = 0.0;  // flotsam: share of the steps solved twice (docs/model.md)
+  double islands = 0.0;        // flotsam: islands per step (contact/islands.hpp)
 };
 
 // Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
@@ -62,18 +63,20 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Result run_flotsam(JamScene scene, int warm_up, int timed) {
   ContactWorld world(jam_contact_config());
   for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
-  double sweeps = 0.0, second_solves = 0.0;
+  double sweeps = 0.0, second_solves = 0.0, islands = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k < timed; ++k) {
     world.step(scene.bodies, scene.walls, move_jam_logs(scene));
     sweeps += world.profile().velocity_sweeps;
     second_solves += world.profile().second_solves;
+    islands += world.profile().islands;
   }
   const double seconds = seconds_since(start);
   Result r = measure(scene);
   r.ms_per_step = 1e3 * seconds / timed;
   r.sweeps = sweeps / timed;
   r.second_solves = second_solves / timed;
+  r.islands = islands / timed;
   return r;
 }
 
@@ -158,10 +161,10 @@ int main() {
                   1e3 * r.percentile_99, r.past_piers);
     }
     std::printf(
-        "%7d %-8s %12.2f %14.2f %14.2f   (flotsam: %.0f velocity sweeps per step, %.0f %% "
-        "of steps solved twice)\n",
+        "%7d %-8s %12.2f %14.2f %14.2f   (flotsam: %.0f islands, %.0f velocity sweeps per step, "
+        "%.0f %% of steps solved twice)\n",
         n, "ratio", f.ms_per_step / b.ms_per_step, f.largest / b.largest,
-        f.percentile_99 / b.percentile_99, f.sweeps, 100.0 * f.second_solves);
+        f.percentile_99 / b.percentile_99, f.islands, f.sweeps, 100.0 * f.second_solves);
   }
   return 0;
 }

@@ -10,21 +10,13 @@ namespace flotsam {
 
 namespace {
 
-/// Speed of a body's fastest point, |u_p| + |omega| L/2 [m/s].
-double fastest_point_speed(double L, const BodyStateVector& y) {
-  return y.segment<2>(3).norm() + std::abs(y[5]) * 0.5 * L;
-}
-
-/// The per-body hooks of rkf45_integrate: the l/4 step bound, friction stopping a grounded body
-/// (spec 3.4: friction may stop a body within a step but not reverse it), and recording.
+/// The per-body hooks of rkf45_integrate: friction stopping a grounded body (spec 3.4: friction
+/// may stop a body within a step but not reverse it), and recording. The step has no bound of its
+/// own: the contact intervals (ContactWorld::plan) keep bodies that may touch from tunnelling.
 struct BodyStepHooks {
   const BodyLoads& loads;  // loads at the start of the current step
-  double L, l;             // [m]
 
-  double max_step(double /*t*/, const BodyStateVector& y) const {
-    const double speed = fastest_point_speed(L, y);
-    return speed > 0.0 ? 0.25 * l / speed : 1e300;  // moves < l/4 (spec 3.5)
-  }
+  double max_step(double /*t*/, const BodyStateVector& /*y*/) const { return 1e300; }
 
   bool event(const BodyStateVector& y, BodyStateVector& y_new) const {
     if (!loads.grounded) return false;
@@ -55,15 +47,14 @@ void record_loads(BodySet& bodies, int i, const BodyLoads& loads, int hint) {
 
 }  // namespace
 
-int BodyIntegrator::contact_intervals(const BodySet& bodies, double dt) const {
-  double most = 0.0;  // largest (distance moved in dt) / (l/4); max is exact in any order
-  for (int i = 0; i < bodies.size(); ++i) {
-    if (bodies.state[i] == BodyState::gone) continue;
-    const double speed =
-        bodies.velocity[i].norm() + std::abs(bodies.angular_velocity[i]) * 0.5 * bodies.length[i];
-    most = std::max(most, speed * dt / (0.25 * bodies.width[i]));
-  }
-  return std::clamp(static_cast<int>(std::ceil(most)), 1, options_.max_contact_intervals);
+ContactSchedule ContactSchedule::one_group(const BodySet& bodies, int intervals) {
+  ContactSchedule schedule;
+  ContactGroup& group = schedule.groups.emplace_back();
+  group.intervals = intervals;
+  for (int i = 0; i < bodies.size(); ++i)
+    if (bodies.state[i] != BodyState::gone) group.bodies.push_back(i);
+  schedule.at_end = group.bodies;
+  return schedule;
 }
 
 void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow, double ta,
@@ -102,7 +93,7 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
   Rkf45Counters counters;
   double h = bodies.step_size[i];
   const BodyStateVector y = rkf45_integrate<6>(f, first, ta, tb, body_state(bodies, i), h, options,
-                                               counters, BodyStepHooks{loads, bodies.length[i], l});
+                                               counters, BodyStepHooks{loads});
   set_body_state(bodies, i, y);
   bodies.step_size[i] = h;
   record_loads(bodies, i, loads, hint);
@@ -110,26 +101,53 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
   rejected += counters.rejected;
 }
 
-IntegrationStats BodyIntegrator::advance(BodySet& bodies, const FlowField& flow, double t0,
-                                         double t1, const ContactHook& hook) const {
-  IntegrationStats stats;
-  const int K = hook ? contact_intervals(bodies, t1 - t0) : 1;
-  stats.contact_intervals = K;
-  const int n = bodies.size();
-  for (int k = 0; k < K; ++k) {
-    const double ta = t0 + (t1 - t0) * k / K;
-    const double tb = k + 1 == K ? t1 : t0 + (t1 - t0) * (k + 1) / K;
-    long accepted = 0, rejected = 0;
+void BodyIntegrator::advance_bodies(BodySet& bodies, const std::vector<int>& list,
+                                    const FlowField& flow, double ta, double tb, double step_span,
+                                    IntegrationStats& stats) const {
+  const int n = static_cast<int>(list.size());
+  long accepted = 0, rejected = 0;
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted, rejected) if (n >= 256)
-    for (int i = 0; i < n; ++i) {
-      if (bodies.state[i] == BodyState::gone) continue;
-      advance_body(bodies, i, flow, ta, tb, t1 - t0, accepted, rejected);
-    }
-    stats.accepted += accepted;
-    stats.rejected += rejected;
-    if (hook) hook(tb, bodies);
+  for (int k = 0; k < n; ++k) {
+    const int i = list[k];
+    if (bodies.state[i] == BodyState::gone) continue;
+    advance_body(bodies, i, flow, ta, tb, step_span, accepted, rejected);
   }
+  stats.accepted += accepted;
+  stats.rejected += rejected;
+}
+
+IntegrationStats BodyIntegrator::advance(BodySet& bodies, const FlowField& flow, double t0,
+                                         double t1, const ContactSchedule& schedule,
+                                         const ContactHook& hook) const {
+  IntegrationStats stats;
+  stats.contact_intervals = 1;
+  advance_bodies(bodies, schedule.free, flow, t0, t1, t1 - t0, stats);
+  std::vector<double> last_interval(static_cast<std::size_t>(bodies.size()), t1 - t0);  // [s]
+  for (const ContactGroup& group : schedule.groups) {
+    const int K = group.intervals;
+    stats.contact_intervals = std::max(stats.contact_intervals, K);
+    stats.grouped += static_cast<int>(group.bodies.size());
+    for (int k = 0; k < K; ++k) {
+      const double ta = t0 + (t1 - t0) * k / K;
+      const double tb = k + 1 == K ? t1 : t0 + (t1 - t0) * (k + 1) / K;
+      advance_bodies(bodies, group.bodies, flow, ta, tb, t1 - t0, stats);
+      if (k + 1 < K && hook) hook(ContactInterval{tb, tb - ta, &group.bodies}, bodies);
+      if (k + 1 == K)
+        for (const int i : group.bodies) last_interval[i] = tb - ta;
+    }
+  }
+  stats.linked = static_cast<int>(schedule.at_end.size());
+  if (hook && !schedule.at_end.empty())
+    hook(ContactInterval{t1, t1 - t0, &schedule.at_end, &last_interval}, bodies);
   return stats;
+}
+
+IntegrationStats BodyIntegrator::advance(BodySet& bodies, const FlowField& flow, double t0,
+                                         double t1) const {
+  ContactSchedule schedule;
+  for (int i = 0; i < bodies.size(); ++i)
+    if (bodies.state[i] != BodyState::gone) schedule.free.push_back(i);
+  return advance(bodies, flow, t0, t1, schedule, {});
 }
 
 }  // namespace flotsam

@@ -64,50 +64,70 @@ ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coeffi
 // the same state, each body's detection margin grown by the distance the first solve moved it:
 // the contacts it would have run into are now seen as gaps, whose speculative target (v* = -s/h)
 // lets it close them and no more.
-void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval) {
+void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval,
+                        const std::vector<int>* members, const std::vector<double>* lengths) {
   assert(interval >= 0.0);  // a programming error, not bad input
+  if (lengths) {
+    lengths_ = *lengths;
+  } else {
+    lengths_.assign(static_cast<std::size_t>(bodies.size()), interval);
+  }
   reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
-  detect(bodies, walls);
-  solve(bodies, interval);
-  if (grow_reach(bodies, interval)) {
-    undo_solve(bodies, interval);
+  detect(bodies, walls, members);
+  solve(bodies);
+  if (grow_reach(bodies)) {
+    undo_solve(bodies);
     contacts_ = previous_;  // the last interval's contacts again, for the warm start
-    detect(bodies, walls);
-    solve(bodies, interval);
+    contacts_.insert(contacts_.end(), others_.begin(), others_.end());
+    detect(bodies, walls, members);
+    solve(bodies);
     profile_.second_solves = 1;
   } else {
     profile_.second_solves = 0;
   }
   correct_positions(bodies);
+  contacts_.insert(contacts_.end(), others_.begin(), others_.end());
+  others_.clear();
 }
 
 // reach_i = how far the solve moved body i's farthest point, h (|du| + |d omega| R), where it is
 // more than its detection margin; true when some body's is.
-bool ContactWorld::grow_reach(const BodySet& bodies, double interval) {
+bool ContactWorld::grow_reach(const BodySet& bodies) {
   bool grown = false;
   for (int i = 0; i < bodies.size(); ++i) {
     if (bodies.state[i] == BodyState::gone) continue;
     const double R = 0.5 * std::hypot(bodies.length[i], bodies.width[i]);  // [m]
     const double moved =
-        interval * ((bodies.velocity[i] - velocity_before_[i]).norm() +
-                    std::abs(bodies.angular_velocity[i] - angular_velocity_before_[i]) * R);
+        lengths_[i] * ((bodies.velocity[i] - velocity_before_[i]).norm() +
+                       std::abs(bodies.angular_velocity[i] - angular_velocity_before_[i]) * R);
     if (moved > 2.0 * config_.allowed_overlap * bodies.width[i]) reach_[i] = moved, grown = true;
   }
   return grown;
 }
 
-void ContactWorld::undo_solve(BodySet& bodies, double interval) {
+void ContactWorld::undo_solve(BodySet& bodies) {
   for (int i = 0; i < bodies.size(); ++i) {
-    bodies.position[i] -= interval * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] -= interval * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    bodies.position[i] -= lengths_[i] * (bodies.velocity[i] - velocity_before_[i]);
+    bodies.angle[i] -= lengths_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
     bodies.velocity[i] = velocity_before_[i];
     bodies.angular_velocity[i] = angular_velocity_before_[i];
   }
 }
 
-void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls) {
+ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments& walls,
+                                   double dt) {
+  ContactSchedule schedule = planner_.plan(bodies, walls, dt, config_);
+  std::vector<char> free(static_cast<std::size_t>(bodies.size()), 0);
+  for (const int i : schedule.free) free[i] = 1;
+  std::erase_if(contacts_,
+                [&](const ContactConstraint& c) { return free[c.a] || (c.b >= 0 && free[c.b]); });
+  return schedule;
+}
+
+void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls,
+                          const std::vector<int>* members) {
   Stopwatch clock;
-  update_boxes(bodies);
+  update_boxes(bodies, members);
   profile_.boxes = clock.lap();
   find_pairs(walls);
   profile_.broad_phase = clock.lap();
@@ -118,13 +138,16 @@ void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls) 
 // Each box is the body's footprint grown by its contact margin 2 * allowed_overlap * l (and its
 // reach, see step()), so that every pair the narrow phase would keep (gap <= margin) is a
 // candidate.
-void ContactWorld::update_boxes(const BodySet& bodies) {
+void ContactWorld::update_boxes(const BodySet& bodies, const std::vector<int>* members) {
   const int n = bodies.size();
   reach_.resize(static_cast<std::size_t>(n), 0.0);  // zero unless step() grew it
   boxes_.resize(static_cast<std::size_t>(n));
-  active_.resize(static_cast<std::size_t>(n));
+  active_.assign(static_cast<std::size_t>(n), members ? 0 : 1);
+  if (members)
+    for (const int i : *members) active_[i] = 1;
   for (int i = 0; i < n; ++i) {
-    active_[i] = bodies.state[i] != BodyState::gone;
+    active_[i] = active_[i] && bodies.state[i] != BodyState::gone;
+    if (!active_[i]) continue;
     const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
     const double grow = 2.0 * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
@@ -158,8 +181,13 @@ void ContactWorld::find_pairs(const BoundarySegments& walls) {
   profile_.wall_pairs = static_cast<int>(wall_pairs_.size());
 }
 
+// The last contacts of this step's bodies become previous_ (for the warm start); those of the
+// other bodies are set aside in others_ and put back after the solve.
 void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls) {
-  previous_.swap(contacts_);
+  previous_.clear();
+  others_.clear();
+  for (ContactConstraint& c : contacts_)
+    (active_[c.a] || (c.b >= 0 && active_[c.b]) ? previous_ : others_).push_back(std::move(c));
   contacts_.clear();
   auto relative = [&](ContactConstraint& c) {
     for (int k = 0; k < c.point_count; ++k) {
@@ -244,26 +272,53 @@ void ContactWorld::match_previous_points() {
 // steady force then does not creep into its supports by F h^2 / m per interval. h must be the
 // interval the bodies have just been moved over, not a longer step: the move would otherwise
 // be too long by the ratio (and a bounce could carry a body through a wall).
-void ContactWorld::solve(BodySet& bodies, double interval) {
+// Each island is solved on its own, the islands in parallel (contact/islands.hpp).
+void ContactWorld::solve(BodySet& bodies) {
   Stopwatch clock;
   masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
   match_previous_points();
-  prepare_contacts(contacts_, bodies, masses_, config_, interval);
+  prepare_contacts(contacts_, bodies, masses_, config_, lengths_);
+  islands_.group(contacts_, bodies.size());
+  profile_.islands = islands_.count();
+  profile_.largest_island = islands_.largest();
   velocity_before_ = bodies.velocity;
   angular_velocity_before_ = bodies.angular_velocity;
-  warm_start_contacts(contacts_, bodies, masses_);
-  profile_.velocity_sweeps = solve_contact_velocities(contacts_, bodies, masses_, config_);
+  const std::vector<int>& order = islands_.largest_first();
+  const int count = islands_.count();
+  int sweeps = 0;
+#pragma omp parallel for schedule(dynamic) reduction(max : sweeps) if (in_parallel())
+  for (int k = 0; k < count; ++k) {
+    const std::span<ContactConstraint> island = islands_.island(contacts_, order[k]);
+    warm_start_contacts(island, bodies, masses_);
+    sweeps = std::max(sweeps, solve_contact_velocities(island, bodies, masses_, config_));
+  }
+  profile_.velocity_sweeps = sweeps;
   for (int i = 0; i < bodies.size(); ++i) {
-    bodies.position[i] += interval * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] += interval * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    bodies.position[i] += lengths_[i] * (bodies.velocity[i] - velocity_before_[i]);
+    bodies.angle[i] += lengths_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
   }
   profile_.solve = clock.lap();
 }
 
+// Each island stops its sweeps once its own overlaps are within the slop.
 void ContactWorld::correct_positions(BodySet& bodies) {
   Stopwatch clock;
-  profile_.largest_overlap = correct_contact_positions(contacts_, bodies, masses_, config_);
+  const std::vector<int>& order = islands_.largest_first();
+  const int count = islands_.count();
+  double worst = 0.0;  // [m]
+#pragma omp parallel for schedule(dynamic) reduction(max : worst) if (in_parallel())
+  for (int k = 0; k < count; ++k) {
+    worst = std::max(worst, correct_contact_positions(islands_.island(contacts_, order[k]), bodies,
+                                                      masses_, config_));
+  }
+  profile_.largest_overlap = worst;
   profile_.positions = clock.lap();
+}
+
+// Threads pay off from a few hundred contacts (a parallel region costs a few microseconds).
+bool ContactWorld::in_parallel() const {
+  constexpr std::size_t parallel_contacts = 256;  // [-]
+  return contacts_.size() >= parallel_contacts && islands_.count() > 1;
 }
 
 ContactReport ContactWorld::report(const BoundarySegments& walls, int body_count) const {

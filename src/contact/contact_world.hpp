@@ -1,8 +1,10 @@
 #pragma once
-// The contact stage of a body step (spec 4): one call reads as the pipeline
+// The contact stage of a body step (spec 4). plan() groups, at the start of a flow step, the
+// bodies that may touch (contact_planner.hpp); then, after each contact interval of a group, one
+// call of step() reads as the pipeline
 //
-//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (impulses)
-//   -> correct_positions
+//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (islands,
+//   impulses) -> correct_positions
 //
 // each stage timed into ContactProfile, as Box2D's b2World_Step. The world keeps what makes the
 // next step cheap: the sweep order, and last step's impulses to warm-start the solver.
@@ -11,25 +13,29 @@
 
 #include "bodies/body_set.hpp"
 #include "contact/boundary_segments.hpp"
+#include "contact/contact_planner.hpp"
 #include "contact/contact_report.hpp"
 #include "contact/impulse_solver.hpp"
+#include "contact/islands.hpp"
 #include "contact/sweep_and_prune.hpp"
 #include "io/case.hpp"
 
 namespace flotsam {
 
 struct ContactProfile {
-  double boxes = 0.0;           // [s] bounding boxes
-  double broad_phase = 0.0;     // [s] body pairs and body-wall candidates
-  double narrow_phase = 0.0;    // [s] manifolds
-  double solve = 0.0;           // [s] impulses
-  double positions = 0.0;       // [s] position correction
-  int body_pairs = 0;           // candidate body pairs from the broad phase
-  int wall_pairs = 0;           // candidate (body, segment) pairs
-  int contacts = 0;             // manifolds with at least one point
-  int points = 0;               // contact points
-  int warm_started_points = 0;  // points matched to one of the last step's
-  int velocity_sweeps = 0;
+  double boxes = 0.0;            // [s] bounding boxes
+  double broad_phase = 0.0;      // [s] body pairs and body-wall candidates
+  double narrow_phase = 0.0;     // [s] manifolds
+  double solve = 0.0;            // [s] impulses
+  double positions = 0.0;        // [s] position correction
+  int body_pairs = 0;            // candidate body pairs from the broad phase
+  int wall_pairs = 0;            // candidate (body, segment) pairs
+  int contacts = 0;              // manifolds with at least one point
+  int points = 0;                // contact points
+  int warm_started_points = 0;   // points matched to one of the last step's
+  int velocity_sweeps = 0;       // the most any island took
+  int islands = 0;               // groups of bodies joined by contacts (contact/islands.hpp)
+  int largest_island = 0;        // contacts in the largest island
   double largest_overlap = 0.0;  // [m] after position correction
   int second_solves = 0;         // 1 when the interval was solved again with grown margins
 };
@@ -45,11 +51,19 @@ class ContactWorld {
   /// `interval` h [s] is the time the bodies have just been moved over since the last call (one
   /// contact interval of BodyIntegrator::advance, not the whole flow step): the move redoes that
   /// interval with the new velocities, and gaps may close within the next h (speculative
-  /// contact). h >= 0.
-  void step(BodySet& bodies, const BoundarySegments& walls, double interval);
+  /// contact). h >= 0. With `members`, only those bodies take part (a contact group): the
+  /// contacts of the others are kept as they are. With `lengths`, body i's h is lengths[i].
+  void step(BodySet& bodies, const BoundarySegments& walls, double interval,
+            const std::vector<int>* members = nullptr,
+            const std::vector<double>* lengths = nullptr);
 
   /// Detection alone (boxes, broad phase, narrow phase): fills contacts().
-  void detect(const BodySet& bodies, const BoundarySegments& walls);
+  void detect(const BodySet& bodies, const BoundarySegments& walls,
+              const std::vector<int>* members = nullptr);
+
+  /// The contact groups of the next flow step of length dt [s] (contact_planner.hpp); the
+  /// contacts of bodies left free are dropped (nothing is within their reach).
+  ContactSchedule plan(const BodySet& bodies, const BoundarySegments& walls, double dt);
 
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
   const std::vector<BodyPair>& body_pairs() const { return body_pairs_; }
@@ -70,14 +84,15 @@ class ContactWorld {
   const ContactConfig& config() const { return config_; }
 
  private:
-  void update_boxes(const BodySet& bodies);
+  void update_boxes(const BodySet& bodies, const std::vector<int>* members);
   void find_pairs(const BoundarySegments& walls);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
   void match_previous_points();
-  void solve(BodySet& bodies, double interval);
-  bool grow_reach(const BodySet& bodies, double interval);
-  void undo_solve(BodySet& bodies, double interval);
+  void solve(BodySet& bodies);
+  bool grow_reach(const BodySet& bodies);
+  void undo_solve(BodySet& bodies);
   void correct_positions(BodySet& bodies);
+  bool in_parallel() const;
 
   ContactConfig config_;
   double added_mass_coefficient_;  // C_a [-], used when config_.added_mass_in_contact
@@ -88,10 +103,14 @@ class ContactWorld {
   std::vector<BodyPair> body_pairs_;
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
+  std::vector<ContactConstraint> others_;  // contacts of the bodies outside this step's group
+  ContactPlanner planner_;
   SolverMasses masses_;
+  Islands islands_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
-  std::vector<double> reach_;  // [m] per body, added to its detection margin (see step())
+  std::vector<double> reach_;    // [m] per body, added to its detection margin (see step())
+  std::vector<double> lengths_;  // h per body [s]
   std::vector<int> found_, stamp_;
   int stamp_value_ = 0;
   ContactProfile profile_;

@@ -123,9 +123,11 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
   return m;
 }
 
-void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config, double interval) {
+void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
+                      const SolverMasses& masses, const ContactConfig& config,
+                      const std::vector<double>& intervals) {
   for (ContactConstraint& c : contacts) {
+    const double interval = c.b >= 0 ? std::max(intervals[c.a], intervals[c.b]) : intervals[c.a];
     const Vec2 tangent = -perp(c.normal);
     for (int k = 0; k < c.point_count; ++k) {
       ContactPointConstraint& p = c.points[static_cast<std::size_t>(k)];
@@ -160,7 +162,7 @@ void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& b
   }
 }
 
-void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& bodies,
                          const SolverMasses& masses) {
   for (const ContactConstraint& c : contacts) {
     const Vec2 tangent = -perp(c.normal);
@@ -172,7 +174,7 @@ void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet
   }
 }
 
-int solve_contact_velocities(std::vector<ContactConstraint>& contacts, BodySet& bodies,
+int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
                              const SolverMasses& masses, const ContactConfig& config) {
   int sweep = 0;
   while (sweep < config.iterations) {
@@ -194,7 +196,7 @@ int solve_contact_velocities(std::vector<ContactConstraint>& contacts, BodySet& 
   return sweep;
 }
 
-double correct_contact_positions(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+double correct_contact_positions(std::span<const ContactConstraint> contacts, BodySet& bodies,
                                  const SolverMasses& masses, const ContactConfig& config) {
   double worst = 0.0;  // largest overlap measured in the last sweep [m]
   for (int sweep = 0; sweep < config.position_iterations; ++sweep) {

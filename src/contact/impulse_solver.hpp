@@ -30,6 +30,7 @@
 // [-max_correction, 0], moves the two bodies apart. It changes positions and angles only, never
 // velocities, so it adds no kinetic energy.
 #include <array>
+#include <span>
 #include <vector>
 
 #include "bodies/body_set.hpp"
@@ -81,25 +82,27 @@ struct SolverMasses {
 SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
                                 double added_mass_coefficient);
 
-/// Fills the effective masses, approach and target velocities of every point; `interval` h [s]
-/// is the time over which the solved velocities will move the bodies (speculative target).
-void prepare_contacts(std::vector<ContactConstraint>& contacts, const BodySet& bodies,
-                      const SolverMasses& masses, const ContactConfig& config, double interval);
+/// Fills the effective masses, approach and target velocities of every point; `intervals[i]` h
+/// [s] is the time over which the solved velocities will move body i (speculative target: the
+/// longer of the two bodies').
+void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
+                      const SolverMasses& masses, const ContactConfig& config,
+                      const std::vector<double>& intervals);
 
 /// Applies the accumulated impulses the points start with (warm start from the last step).
-void warm_start_contacts(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& bodies,
                          const SolverMasses& masses);
 
 /// Sequential impulses until the largest change of a point's normal or tangential velocity in
 /// a sweep is below config.velocity_tolerance, or config.iterations sweeps. Returns the number
 /// of sweeps.
-int solve_contact_velocities(std::vector<ContactConstraint>& contacts, BodySet& bodies,
+int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
                              const SolverMasses& masses, const ContactConfig& config);
 
 /// Non-linear Gauss-Seidel position correction, until every overlap is within 1.5 times its
 /// slop or config.position_iterations sweeps; returns the largest overlap seen in the last
 /// sweep [m].
-double correct_contact_positions(const std::vector<ContactConstraint>& contacts, BodySet& bodies,
+double correct_contact_positions(std::span<const ContactConstraint> contacts, BodySet& bodies,
                                  const SolverMasses& masses, const ContactConfig& config);
 
 }  // namespace flotsam

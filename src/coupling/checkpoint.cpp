@@ -53,9 +53,10 @@ struct archive_fields<ContactConstraint> {
 template <>
 struct archive_fields<IntegrationStats> {
   using S = IntegrationStats;
-  static constexpr auto fields = std::make_tuple(&S::accepted, &S::rejected, &S::contact_intervals);
+  static constexpr auto fields =
+      std::make_tuple(&S::accepted, &S::rejected, &S::contact_intervals, &S::grouped, &S::linked);
 };
-static_assert(sizeof(IntegrationStats) == 24, "list the new member in archive_fields");
+static_assert(sizeof(IntegrationStats) == 32, "list the new member in archive_fields");
 
 namespace {
 

@@ -149,17 +149,22 @@ void Simulation::advance_bodies(double t0, double t1) {
     auto timed = timer_.time(Stage::bodies);
     releaser_->release(bodies_, flow_->field(), t0, t1);
   }
-  // RKF45 sub-steps of every body; contacts resolved at the end of each contact interval.
-  // The contact solve moves bodies over the interval just integrated (ContactWorld::step).
-  const ContactHook resolve_contacts = [this, last = t0](double t, BodySet& bodies) mutable {
+  // RKF45 sub-steps of every body; the bodies that may touch, in contact groups, with their
+  // contacts resolved at the end of each of their contact intervals (body_integrator.hpp). The
+  // contact solve moves bodies over the interval just integrated (ContactWorld::step).
+  ContactSchedule schedule;
+  {
     auto timed = timer_.time(Stage::contacts);
-    contacts_->step(bodies, walls_, t - last);
-    last = t;
+    schedule = contacts_->plan(bodies_, walls_, t1 - t0);
+  }
+  const ContactHook resolve_contacts = [this](const ContactInterval& interval, BodySet& bodies) {
+    auto timed = timer_.time(Stage::contacts);
+    contacts_->step(bodies, walls_, interval.length, interval.bodies, interval.lengths);
   };
   IntegrationStats stats;
   {
     auto timed = timer_.time(Stage::bodies);
-    stats = integrator_->advance(bodies_, flow_->field(), t0, t1, resolve_contacts);
+    stats = integrator_->advance(bodies_, flow_->field(), t0, t1, schedule, resolve_contacts);
   }
   integration_totals_.accepted += stats.accepted;
   integration_totals_.rejected += stats.rejected;

@@ -1,5 +1,5 @@
-// The body integrator (spec 3.5, 5): contact intervals and the hook, the l/4 step limit,
-// counters, and determinism: the same seed gives the same run, bit for bit, with 1 and 2
+// The body integrator (spec 3.5, 5): free bodies and contact groups with their intervals and the
+// hook, counters, and determinism: the same seed gives the same run, bit for bit, with 1 and 2
 // threads.
 #include "bodies/body_integrator.hpp"
 
@@ -15,26 +15,52 @@
 namespace flotsam {
 namespace {
 
-TEST(BodyIntegrator, ContactHookRunsAtCommonTimesSoNoBodyMovesMoreThanAQuarterWidth) {
+TEST(BodyIntegrator, AGroupIsSteppedInItsIntervalsWithTheHookAtCommonTimes) {
   BodySet bodies;
   bodies.add(BodySpec{.position = {0, 0}, .velocity = {10.0, 0.0}});  // l = 1: 1 m per 0.1 s
-  bodies.add(BodySpec{.position = {0, 50}});
+  bodies.add(BodySpec{.position = {0, 50}, .velocity = {10.0, 0.0}});
+  bodies.add(BodySpec{.position = {0, 100}, .velocity = {10.0, 0.0}});
   const AnalyticFlow flow = uniform_flow({10.0, 0.0}, 5.0);
   BodyIntegrator integrator(ForceModel{});
-  std::vector<double> times;
+  ContactSchedule schedule;
+  schedule.groups.push_back({{0, 2}, 4});
+  schedule.free = {1};
+  schedule.at_end = {0, 1, 2};
+  std::vector<double> times, lengths;
+  std::vector<double> at_end;   // the lengths per body at the step's end
+  std::vector<Vec2> free_body;  // body 1 when the hook is called: already at the step's end
   const IntegrationStats stats =
-      integrator.advance(bodies, flow, 0.2, 0.3, [&](double t, BodySet&) { times.push_back(t); });
-  EXPECT_EQ(stats.contact_intervals, 4);  // ceil(10 * 0.1 / 0.25)
+      integrator.advance(bodies, flow, 0.2, 0.3, schedule, [&](const auto& interval, auto& b) {
+        times.push_back(interval.end);
+        lengths.push_back(interval.length);
+        free_body.push_back(b.position[1]);
+        if (interval.lengths) {
+          EXPECT_EQ(*interval.bodies, schedule.at_end);
+          at_end = *interval.lengths;
+        } else {
+          EXPECT_EQ(*interval.bodies, schedule.groups[0].bodies);
+        }
+        EXPECT_EQ(b.position[0].x(), b.position[2].x());  // the group's bodies at a common time
+      });
+  EXPECT_EQ(stats.contact_intervals, 4);
+  EXPECT_EQ(stats.grouped, 2);
   ASSERT_EQ(times.size(), 4u);
   EXPECT_NEAR(times[0], 0.225, 1e-15);
   EXPECT_NEAR(times[1], 0.25, 1e-15);
   EXPECT_NEAR(times[2], 0.275, 1e-15);
   EXPECT_EQ(times[3], 0.3);  // the flow step's end, exactly
-  // The moving body is carried at the flow speed: exactly 1 m further.
-  EXPECT_NEAR(bodies.position[0].x(), 1.0, 1e-12);
-  // Its sub-steps are limited to l/4 = 0.25 m, i.e. 0.025 s: at least 4 of them.
-  EXPECT_GE(stats.accepted, 4 + 1);
-  EXPECT_GT(bodies.step_size[0], 0.0);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(lengths[k], 0.025, 1e-15);
+  EXPECT_NEAR(lengths[3], 0.1, 1e-15);  // the step's end: the free body came the whole step,
+  ASSERT_EQ(at_end.size(), 3u);         // the group's bodies its last interval
+  EXPECT_NEAR(at_end[0], 0.025, 1e-15);
+  EXPECT_NEAR(at_end[1], 0.1, 1e-15);
+  EXPECT_NEAR(at_end[2], 0.025, 1e-15);
+  for (const Vec2& x : free_body) EXPECT_NEAR(x.x(), 1.0, 1e-12);
+  // Every body is carried at the flow speed: exactly 1 m further.
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(bodies.position[i].x(), 1.0, 1e-12);
+  // The free body crosses the step in one sub-step (its forces are zero); the group's bodies
+  // take one per interval.
+  EXPECT_EQ(stats.accepted, 1 + 2 * 4);
 }
 
 TEST(BodyIntegrator, WithoutAHookOneIntervalAndGoneBodiesStay) {

@@ -1,10 +1,10 @@
 #pragma once
-// Random throws of single logs at the banks and a pier of a straight channel, stepped as the body
-// integrator steps them (src/bodies/body_integrator.hpp): a flow step of dt_flow is cut into K
-// equal contact intervals, K the smallest count such that the body's fastest point
-// (|u| + |omega| L/2) moves at most l/4 per interval, and the contact stage runs after each
-// interval with that interval's length. Shared by no_tunnelling_through_walls.cpp (default run)
-// and no_tunnelling_through_walls_slow.cpp (the full 100,000 throws).
+// Random throws of single logs at the banks and a pier of a straight channel, stepped as the
+// simulation steps them (src/bodies/body_integrator.hpp): each flow step planned by the contact
+// stage (src/contact/contact_planner.hpp), the log free over the step when no wall is within its
+// reach, else moved in its group's K equal contact intervals with the contact stage after each.
+// Shared by no_tunnelling_through_walls.cpp (default run) and no_tunnelling_through_walls_slow.cpp
+// (the full 100,000 throws).
 //
 //     bank y = 40  -----------------------------
 //                          ( )  pier: centre (0, 20), radius 2, 64-gon
@@ -88,34 +88,32 @@ inline void throw_one_log(std::mt19937& rng, const BoundarySegments& walls, Thro
 
   bool hit = false;
   for (int step = 0; step < flow_steps; ++step) {
-    // The flow step is cut into intervals of equal length; when a contact makes the fastest
-    // point faster (a blow near one end turns translation into spin, up to twice as fast for
-    // a slender log), the rest of the step is cut again, so that the l/4 rule always holds.
-    double left = flow_step;  // [s] of this flow step
-    while (left > 0.0) {
-      const double speed =
-          bodies.velocity[0].norm() + std::abs(bodies.angular_velocity[0]) * 0.5 * log.length;
-      const int K = std::max(1, static_cast<int>(std::ceil(speed * left / (0.25 * log.width))));
-      const double h = left / K;  // [s] contact interval
-      for (int k = 0; k < K; ++k) {
-        bodies.position[0] += h * bodies.velocity[0];
-        bodies.angle[0] += h * bodies.angular_velocity[0];
-        world.step(bodies, walls, h);
-        left = k + 1 == K ? 0.0 : left - h;
-        ++s.intervals;
-        double overlap = 0.0;  // [m] at detection
-        for (const ContactConstraint& c : world.contacts()) {
-          for (int q = 0; q < c.point_count; ++q) {
-            overlap = std::max(overlap, -c.points[static_cast<std::size_t>(q)].separation);
-          }
-        }
-        hit = hit || !world.contacts().empty();
-        s.deepest = std::max(s.deepest, overlap / log.width);  // at detection, before correction
-        if (centre_across_a_wall(bodies.position[0])) ++s.crossings;
-        const double now = bodies.velocity[0].norm() +
-                           std::abs(bodies.angular_velocity[0]) * 0.5 * log.length;  // [m/s]
-        if (now * h > 0.25 * log.width) break;  // faster than the interval allows: cut again
+    // The flow step as the simulation steps it: planned (ContactWorld::plan), then the log free
+    // over the whole step or in its group's intervals, the contact stage after each (the last at
+    // the step's end).
+    const ContactSchedule plan = world.plan(bodies, walls, flow_step);
+    const int K = plan.groups.empty() ? 1 : plan.groups.front().intervals;
+    const double h = flow_step / K;  // [s] contact interval
+    for (int k = 0; k < K; ++k) {
+      bodies.position[0] += h * bodies.velocity[0];
+      bodies.angle[0] += h * bodies.angular_velocity[0];
+      // As BodyIntegrator::advance: a group's intervals but its last, then every linked body at
+      // the step's end (a log needing one interval is free but linked).
+      if (k + 1 < K) {
+        world.step(bodies, walls, h, &plan.groups.front().bodies);
+      } else if (!plan.at_end.empty()) {
+        world.step(bodies, walls, h, &plan.at_end);
       }
+      ++s.intervals;
+      double overlap = 0.0;  // [m] at detection
+      for (const ContactConstraint& c : world.contacts()) {
+        for (int q = 0; q < c.point_count; ++q) {
+          overlap = std::max(overlap, -c.points[static_cast<std::size_t>(q)].separation);
+        }
+      }
+      hit = hit || !world.contacts().empty();
+      s.deepest = std::max(s.deepest, overlap / log.width);  // at detection, before correction
+      if (centre_across_a_wall(bodies.position[0])) ++s.crossings;
     }
   }
   ++s.throws;

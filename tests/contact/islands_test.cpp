@@ -1,0 +1,114 @@
+// Islands are the connected components of the contact graph (bodies joined by body-body
+// contacts; walls join nothing), checked against a breadth-first search on random graphs.
+#include "contact/islands.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <queue>
+#include <random>
+#include <set>
+
+namespace flotsam {
+namespace {
+
+// Random contacts among n bodies: mostly short-range pairs (chains and clusters, as in a jam),
+// some walls (b = -1). The segment field numbers the contacts, to follow them through group().
+std::vector<ContactConstraint> random_contacts(int n, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> body(0, n - 1), near(1, 4), coin(0, 9);
+  std::vector<ContactConstraint> contacts;
+  for (int m = 0; m < count; ++m) {
+    ContactConstraint c;
+    c.a = body(rng);
+    c.b = coin(rng) == 0 ? -1 : std::min(n - 1, c.a + near(rng));
+    if (c.b == c.a) c.b = -1;
+    c.segment = m;
+    contacts.push_back(c);
+  }
+  return contacts;
+}
+
+// Component of every body by breadth-first search over the body-body contacts.
+std::vector<int> components(int n, const std::vector<ContactConstraint>& contacts) {
+  std::vector<std::vector<int>> next(static_cast<std::size_t>(n));
+  for (const auto& c : contacts) {
+    if (c.b >= 0) next[c.a].push_back(c.b), next[c.b].push_back(c.a);
+  }
+  std::vector<int> component(static_cast<std::size_t>(n), -1);
+  int count = 0;
+  for (int s = 0; s < n; ++s) {
+    if (component[s] >= 0) continue;
+    std::queue<int> queue;
+    queue.push(s), component[s] = count;
+    while (!queue.empty()) {
+      const int i = queue.front();
+      queue.pop();
+      for (const int j : next[i]) {
+        if (component[j] < 0) component[j] = count, queue.push(j);
+      }
+    }
+    ++count;
+  }
+  return component;
+}
+
+TEST(Islands, AreTheConnectedComponentsOfTheContactGraph) {
+  for (unsigned seed = 1; seed <= 50; ++seed) {
+    const int n = 10 + static_cast<int>(seed) * 7;
+    std::vector<ContactConstraint> contacts = random_contacts(n, n * 3 / 4, seed);
+    const std::vector<int> component = components(n, contacts);
+    std::set<int> with_contacts;
+    for (const auto& c : contacts) with_contacts.insert(component[c.a]);
+
+    const std::vector<ContactConstraint> before = contacts;
+    Islands islands;
+    islands.group(contacts, n);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    ASSERT_EQ(islands.count(), static_cast<int>(with_contacts.size()));
+    ASSERT_EQ(contacts.size(), before.size());
+    std::set<int> seen_components, seen_contacts;
+    for (int k = 0; k < islands.count(); ++k) {
+      const auto island = islands.island(contacts, k);
+      ASSERT_FALSE(island.empty());
+      const int own = component[island.front().a];
+      EXPECT_TRUE(seen_components.insert(own).second);  // one island per component
+      int last = -1;
+      for (const ContactConstraint& c : island) {
+        EXPECT_EQ(component[c.a], own);
+        if (c.b >= 0) {
+          EXPECT_EQ(component[c.b], own);
+        }
+        EXPECT_GT(c.segment, last);  // the contacts' order is kept within an island
+        last = c.segment;
+        EXPECT_TRUE(seen_contacts.insert(c.segment).second);  // each contact once
+      }
+    }
+    EXPECT_EQ(seen_contacts.size(), before.size());
+  }
+}
+
+TEST(Islands, ALogAgainstAPierAndAnotherAgainstTheSamePierAreTwoIslands) {
+  std::vector<ContactConstraint> contacts(2);
+  contacts[0].a = 0, contacts[0].b = -1, contacts[0].segment = 7;
+  contacts[1].a = 1, contacts[1].b = -1, contacts[1].segment = 7;
+  Islands islands;
+  islands.group(contacts, 2);
+  EXPECT_EQ(islands.count(), 2);
+}
+
+TEST(Islands, AreHandedOutLargestFirst) {
+  std::vector<ContactConstraint> contacts(4);
+  contacts[0].a = 0, contacts[0].b = -1;  // island of body 0: one contact
+  contacts[1].a = 1, contacts[1].b = 2;   // island of bodies 1, 2, 3: three contacts
+  contacts[2].a = 2, contacts[2].b = 3;
+  contacts[3].a = 3, contacts[3].b = -1;
+  Islands islands;
+  islands.group(contacts, 4);
+  ASSERT_EQ(islands.count(), 2);
+  EXPECT_EQ(islands.largest_first(), (std::vector<int>{1, 0}));
+  EXPECT_EQ(islands.largest(), 3);
+}
+
+}  // namespace
+}  // namespace flotsam
