@@ -33,8 +33,13 @@ void add_ensemble_command(CLI::App& app) {
                 "replace an earlier ensemble in the output folder instead of resuming it");
   cmd->add_flag("-q,--quiet", *quiet, "no progress line");
   cmd->add_flag("--no-pictures", *no_pictures, "no PNG pictures");
-  cmd->callback([options, quiet, no_pictures] {
+  auto no_shared_flow = std::make_shared<bool>(false);
+  cmd->add_flag("--no-shared-flow", *no_shared_flow,
+                "each member computes its own flow even in one-way and frozen cases (the "
+                "results are the same, bit for bit; for checks)");
+  cmd->callback([options, quiet, no_pictures, no_shared_flow] {
     options->progress = !*quiet;
+    options->share_flow = !*no_shared_flow;
     options->pictures = !*no_pictures;
     const RankWorld world;
     const EnsembleReport report = run_ensemble(*options, world);
@@ -44,6 +49,8 @@ void add_ensemble_command(CLI::App& app) {
         "rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
         "job(s))\n",
         report.ran, report.kept, world.size(), options->jobs);
+    fmt::print("flow             {}{}\n", report.flow_sharing,
+               report.flow_shared ? fmt::format(", {:.2f} s", report.flow_seconds) : "");
     fmt::print("wall time        {:.2f} s\n", report.wall_seconds);
     fmt::print("results in       {}\n", report.directory.string());
   });

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "coupling/jam_statistics.hpp"
 #include "coupling/progress.hpp"
+#include "coupling/shared_flow.hpp"
 #include "ensemble/ensemble_pictures.hpp"
 #include "ensemble/ensemble_statistics.hpp"
 #include "ensemble/member_case.hpp"
@@ -180,7 +181,30 @@ std::vector<MemberResult> run_members(const std::vector<MemberRun>& runs, const 
   return results;
 }
 
+/// Records the shared flow of this rank's members (from the first one's case, whose flow is
+/// every member's) in DIR/ensemble_flow_R.bin; returns its path.
+fs::path record_members_flow(const MemberRun& first, const Mesh& mesh, const fs::path& directory,
+                             int rank) {
+  const Case member_case = parse_case(first.case_text, first.case_path.string());
+  const fs::path path = directory / fmt::format("ensemble_flow_{}.bin", rank);
+  record_shared_flow(member_case, mesh, path.string(), true);
+  return path;
+}
+
 }  // namespace
+
+FlowSharing shared_flow_reason(const Case& base, const EnsembleConfig& config) {
+  if (!flow_can_be_shared(base))
+    return {false, "computed by each member (two-way mode: the bodies act on the water)"};
+  const bool varied = std::any_of(config.vary.begin(), config.vary.end(), [](const auto& v) {
+    return v.input == EnsembleInput::discharge_scale;
+  });
+  if (varied || (config.has_sweep && config.sweep_input == EnsembleInput::discharge_scale))
+    return {false, "computed by each member (discharge_scale varies the flow)"};
+  return {true, fmt::format("computed once and shared by the members ({} mode, no input varies "
+                            "the flow)",
+                            base.time.mode == CouplingMode::frozen ? "frozen" : "one-way")};
+}
 
 EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& world) {
   const auto start = std::chrono::steady_clock::now();
@@ -223,11 +247,25 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   MemberProgress progress(share, report.kept, options.progress && world.rank() == 0);
   MemberSetup setup{&plan.mesh, &plan.geometry, plan.config.blocking,
                     options.jobs > 1 || world.size() > 1 ? 1 : 0};
+  FlowSharing sharing = shared_flow_reason(plan.base, plan.config);
+  if (!options.share_flow && sharing.shared)
+    sharing = {false, "computed by each member (--no-shared-flow)"};
+  report.flow_shared = sharing.shared;
+  report.flow_sharing = sharing.reason;
+  if (world.rank() == 0 && options.progress) fmt::print(stderr, "flow: {}\n", sharing.reason);
+  if (sharing.shared && !runs.empty()) {
+    const auto flow_start = std::chrono::steady_clock::now();
+    setup.shared_flow =
+        record_members_flow(runs.front(), plan.mesh, report.directory, world.rank());
+    report.flow_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - flow_start).count();
+  }
   for (MemberResult& r : run_members(runs, setup, std::max(1, options.jobs), progress)) {
     report.member_seconds += r.wall_seconds;
     mine.push_back(std::move(r));
   }
   progress.finish();
+  if (!setup.shared_flow.empty()) fs::remove(setup.shared_flow);
 
   std::string text;
   for (const MemberResult& r : mine) text += serialize_member(r);
