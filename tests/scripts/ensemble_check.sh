@@ -2,7 +2,8 @@
 # Checks of `flotsam ensemble` on tests/scripts/tiny_ensemble.yaml (registered by ensemble.cmake):
 #   reference        --jobs 1: the reference ensemble
 #   jobs2            --jobs 2 gives the same summary and tables, byte for byte
-#   mpirun2          mpirun -n 2 gives the same summary and tables, byte for byte
+#   mpirun2          mpirun -n 2 gives the same summary and tables, byte for byte, and rank 0's
+#                    progress line counts the members of every rank
 #   resume           an interrupted ensemble (two members without their member.txt, one of them
 #                    half-written) resumes: the complete members are kept, the others rerun, and
 #                    the summary is the reference's
@@ -30,9 +31,11 @@ case $mode in
     same jobs2 ;;
   mpirun2)
     root=(); [ "$(id -u)" = 0 ] && root=(--allow-run-as-root)
-    mpirun "${root[@]}" --oversubscribe -n 2 "$flotsam" ensemble "$case" -o mpi2 --overwrite -q \
-        --no-pictures >/dev/null
-    same mpi2 ;;
+    mpirun "${root[@]}" --oversubscribe -n 2 "$flotsam" ensemble "$case" -o mpi2 --overwrite \
+        --no-pictures >/dev/null 2>progress.txt
+    same mpi2
+    # Rank 0's progress line counts the members of both ranks (2 each).
+    tail -1 progress.txt | grep -q "members 4/4 done" || { cat progress.txt; exit 1; } ;;
   resume)
     rm -rf resume && cp -r reference resume
     sed -i "s|$work/reference|$work/resume|g" resume/member_*.yaml
