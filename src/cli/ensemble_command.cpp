@@ -3,6 +3,8 @@
 // probabilities and the distributions (src/ensemble/ensemble_runner.hpp).
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "cli/commands.hpp"
 #include "ensemble/ensemble_runner.hpp"
 
@@ -49,6 +51,12 @@ void add_ensemble_command(CLI::App& app) {
         "rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
         "job(s))\n",
         report.ran, report.kept, world.size(), options->jobs);
+    if (report.ran > 0)
+      fmt::print(
+          "members          {:.3f} s each on rank 0, of which {:.1f} % set-up and output (the "
+          "rest in their steps)\n",
+          report.member_seconds / report.ran,
+          100.0 * (1.0 - report.step_seconds / std::max(report.member_seconds, 1e-300)));
     fmt::print("flow             {}{}\n", report.flow_sharing,
                report.flow_shared ? fmt::format(", {:.2f} s", report.flow_seconds) : "");
     fmt::print("wall time        {:.2f} s\n", report.wall_seconds);

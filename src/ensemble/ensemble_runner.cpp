@@ -309,6 +309,7 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   for (MemberResult& r :
        run_members(runs, setup, std::max(1, options.jobs), report.kept, world, progress)) {
     report.member_seconds += r.wall_seconds;
+    report.step_seconds += r.step_seconds;
     mine.push_back(std::move(r));
   }
   progress.finish();

@@ -44,6 +44,7 @@ struct EnsembleReport {
   int failed = 0;       // in the whole ensemble (rank 0)
   double wall_seconds = 0.0;
   double member_seconds = 0.0;  // [s] sum of the runs' wall times (this rank)
+  double step_seconds = 0.0;    // [s] of which in their steps; the rest is set-up and output
   bool flow_shared = false;     // the members replayed a flow computed once (on each rank)
   std::string flow_sharing;     // why the flow is or is not shared (shared_flow_reason)
   double flow_seconds = 0.0;    // [s] computing the shared flow (this rank)

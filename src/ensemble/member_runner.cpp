@@ -66,6 +66,9 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);
+    for (const Stage stage :
+         {Stage::flow, Stage::bodies, Stage::contacts, Stage::reaction, Stage::diagnostics})
+      result.step_seconds += simulation.timer().seconds(stage);
   } catch (const std::exception& e) {
     result = MemberResult{};
     result.inputs = run.inputs;
