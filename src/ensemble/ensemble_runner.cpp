@@ -1,6 +1,7 @@
 #include "ensemble/ensemble_runner.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -299,6 +300,9 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   if (world.rank() == 0 && options.progress) fmt::print(stderr, "flow: {}\n", sharing.reason);
   if (sharing.shared && !runs.empty()) {
     const auto flow_start = std::chrono::steady_clock::now();
+    // On the members' thread count: with several jobs or ranks the cores are shared, and
+    // OpenMP threads waiting for a busy core cost more than they give (docs/performance.md).
+    if (setup.threads > 0) omp_set_num_threads(setup.threads);
     setup.shared_flow =
         record_members_flow(runs.front(), plan.mesh, report.directory, world.rank());
     report.flow_seconds =
