@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -303,8 +304,19 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
     // On the members' thread count: with several jobs or ranks the cores are shared, and
     // OpenMP threads waiting for a busy core cost more than they give (docs/performance.md).
     if (setup.threads > 0) omp_set_num_threads(setup.threads);
-    setup.shared_flow =
-        record_members_flow(runs.front(), plan.mesh, report.directory, world.rank());
+    try {
+      setup.shared_flow =
+          record_members_flow(runs.front(), plan.mesh, report.directory, world.rank());
+    } catch (const std::exception& e) {
+      // A flow that stops (unstable) stops every member the same way: each then computes its
+      // own and is reported failed with the message, and the ensemble still ends.
+      fmt::print(stderr,
+                 "flotsam: the shared flow could not be computed ({}); each member "
+                 "computes its own\n",
+                 e.what());
+      report.flow_shared = false;
+      report.flow_sharing = "computed by each member (the shared flow stopped)";
+    }
     report.flow_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - flow_start).count();
   }
