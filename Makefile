@@ -100,10 +100,14 @@ bench: build
 	@for c in bridge_piers bridge_flood; do \
 	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/' examples/$$c.yaml \
 	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
-	@echo "== ensemble examples/bridge_blocking.yaml on 2 jobs (docs/performance.md, Ensembles)"
-	OMP_NUM_THREADS=1 /usr/bin/time -f "bridge_blocking ensemble: %e s wall, %U s user" \
-	    $(BUILD)/flotsam ensemble examples/bridge_blocking.yaml -o $(BUILD)/bench_runs/bridge_blocking \
-	    --overwrite --jobs 2 -q | grep -E "ensemble|blocked bridge_1 |wall time"
+	@echo "== ensemble examples/bridge_blocking.yaml on 1 job (12 members per length) and on 2 jobs"
+	@echo "   (all 96): members per minute, the shared flow, set-up and output per member"
+	@echo "   (docs/performance.md, Ensembles)"
+	@for j in 1 2; do m=$$([ $$j = 1 ] && echo 12 || echo 96); \
+	    OMP_NUM_THREADS=1 /usr/bin/time -f "bridge_blocking ensemble, $$j job(s): %e s wall, %U s user" \
+	    $(BUILD)/flotsam ensemble examples/bridge_blocking.yaml -o $(BUILD)/bench_runs/bridge_blocking_$$j \
+	    --members $$m --overwrite --jobs $$j -q --no-pictures \
+	    | grep -E "^ensemble|^members|^flow|wall time"; done
 	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \
 	          $(BUILD)/bench_runs/bridge_piers_fv.yaml $(BUILD)/bench_runs/bridge_flood_fv.yaml \
 	          examples/dam_break_valley.yaml; do \

@@ -3,6 +3,8 @@
 // probabilities and the distributions (src/ensemble/ensemble_runner.hpp).
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "cli/commands.hpp"
 #include "ensemble/ensemble_runner.hpp"
 
@@ -33,8 +35,13 @@ void add_ensemble_command(CLI::App& app) {
                 "replace an earlier ensemble in the output folder instead of resuming it");
   cmd->add_flag("-q,--quiet", *quiet, "no progress line");
   cmd->add_flag("--no-pictures", *no_pictures, "no PNG pictures");
-  cmd->callback([options, quiet, no_pictures] {
+  auto no_shared_flow = std::make_shared<bool>(false);
+  cmd->add_flag("--no-shared-flow", *no_shared_flow,
+                "each member computes its own flow even in one-way and frozen cases (the "
+                "results are the same, bit for bit; for checks)");
+  cmd->callback([options, quiet, no_pictures, no_shared_flow] {
     options->progress = !*quiet;
+    options->share_flow = !*no_shared_flow;
     options->pictures = !*no_pictures;
     const RankWorld world;
     const EnsembleReport report = run_ensemble(*options, world);
@@ -44,6 +51,14 @@ void add_ensemble_command(CLI::App& app) {
         "rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
         "job(s))\n",
         report.ran, report.kept, world.size(), options->jobs);
+    if (report.ran > 0)
+      fmt::print(
+          "members          {:.3f} s each on rank 0, of which {:.1f} % set-up and output (the "
+          "rest in their steps)\n",
+          report.member_seconds / report.ran,
+          100.0 * (1.0 - report.step_seconds / std::max(report.member_seconds, 1e-300)));
+    fmt::print("flow             {}{}\n", report.flow_sharing,
+               report.flow_shared ? fmt::format(", {:.2f} s", report.flow_seconds) : "");
     fmt::print("wall time        {:.2f} s\n", report.wall_seconds);
     fmt::print("results in       {}\n", report.directory.string());
   });

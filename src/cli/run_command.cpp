@@ -57,8 +57,12 @@ void add_run_command(CLI::App& app) {
     if (is_large(estimate))
       fmt::print(stderr, "flotsam: a large run: {}\n", describe_estimate(estimate));
     Mesh mesh = generate_mesh(c.mesh);
-    RunOptions run{options->output, options->overwrite, true,
-                   !options->quiet, options->restart,   options->accept_output_changes};
+    const RunOptions run{.output_directory = options->output,
+                         .overwrite = options->overwrite,
+                         .write_output = true,
+                         .progress = !options->quiet,
+                         .restart = options->restart,
+                         .accept_output_changes = options->accept_output_changes};
     Simulation simulation(std::move(c), std::move(mesh), run);
     simulation.run();
     fmt::print("{}", simulation.summary());

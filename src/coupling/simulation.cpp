@@ -27,7 +27,17 @@ void Simulation::initialize() {
       options_.restart ? restart_checkpoint(output_changed) : "";
   flow_ = make_flow_engine(mesh_, case_);
   flow_->initialize();
-  if (case_.time.mode == CouplingMode::frozen) flow_->settle(case_.time);
+  if (!options_.shared_flow.empty()) {
+    if (options_.restart || !flow_can_be_shared(case_))
+      throw_run_error("{}: a shared flow serves one-way and frozen runs from their start only",
+                      case_.file);
+    shared_flow_ = std::make_unique<SharedFlowReplay>(options_.shared_flow.string(), case_,
+                                                      options_.write_output);
+  }
+  if (case_.time.mode == CouplingMode::frozen && shared_flow_)
+    shared_flow_->settle(*flow_);
+  else if (case_.time.mode == CouplingMode::frozen)
+    flow_->settle(case_.time);
   time_ = flow_->time();
 
   for (const auto& bc : case_.flow.boundaries) {
@@ -136,7 +146,10 @@ void Simulation::advance_flow(double t1) {
   auto timed = timer_.time(Stage::flow);
   if (case_.time.mode == CouplingMode::frozen) return;  // the steady flow stays
   const double t0 = flow_->time();
-  flow_->step(t1 - t0);
+  if (shared_flow_)
+    shared_flow_->step(*flow_, t1);
+  else
+    flow_->step(t1 - t0);
   if (reference_flow_) reference_flow_->step(t1 - reference_flow_->time());
   // Gauges: every step, or at the first step past each multiple of output.probe_interval.
   const double every = case_.output.probe_interval, eps = 1e-9 * case_.time.step;

@@ -22,6 +22,7 @@
 #include "coupling/backwater.hpp"
 #include "coupling/jam_statistics.hpp"
 #include "coupling/run_output.hpp"
+#include "coupling/shared_flow.hpp"
 #include "coupling/stage_timer.hpp"
 #include "flow/flow_engine.hpp"
 #include "flow/probes.hpp"
@@ -38,6 +39,9 @@ struct RunOptions {
   bool restart = false;  // continue the run in the output folder from its last checkpoint
   bool accept_output_changes = false;  // a restart may change the output settings
                                        // (io/case_digest.hpp)
+  /// One-way and frozen runs: the flow read from this file (record_shared_flow of the same
+  /// case's flow, coupling/shared_flow.hpp) instead of computed; "": computed.
+  std::filesystem::path shared_flow = {};
 };
 
 class Simulation {
@@ -106,7 +110,8 @@ class Simulation {
   bool has_bodies_ = false;
 
   std::unique_ptr<FlowEngine> flow_;
-  std::unique_ptr<FlowEngine> reference_flow_;  // the same flow without bodies
+  std::unique_ptr<FlowEngine> reference_flow_;     // the same flow without bodies
+  std::unique_ptr<SharedFlowReplay> shared_flow_;  // RunOptions::shared_flow, when given
   BodySet bodies_;
   std::unique_ptr<BodyIntegrator> integrator_;
   std::unique_ptr<Releaser> releaser_;

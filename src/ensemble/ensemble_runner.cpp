@@ -1,11 +1,14 @@
 #include "ensemble/ensemble_runner.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -15,6 +18,7 @@
 #include "core/error.hpp"
 #include "coupling/jam_statistics.hpp"
 #include "coupling/progress.hpp"
+#include "coupling/shared_flow.hpp"
 #include "ensemble/ensemble_pictures.hpp"
 #include "ensemble/ensemble_statistics.hpp"
 #include "ensemble/member_case.hpp"
@@ -85,35 +89,51 @@ std::string prepare_ensemble_directory(const fs::path& directory, const std::str
   return "new";
 }
 
-/// The progress line over members: done of all, failed, elapsed and the time left at the pace
-/// of the members run so far.
+/// The progress line over the members of every rank (rank 0): done of all, failed, elapsed and
+/// the time left at the pace of the members run so far.
 class MemberProgress {
  public:
-  MemberProgress(int total, int kept, bool show)
-      : total_(total), done_(kept), kept_(kept), show_(show), terminal_(isatty(2) != 0) {}
+  MemberProgress(int total, int ranks, bool show)
+      : total_(total),
+        tallies_(static_cast<std::size_t>(ranks)),
+        show_(show),
+        terminal_(isatty(2) != 0) {}
 
-  void member_done(bool failed) {
-    std::lock_guard lock(mutex_);
-    ++done_;
-    failed_ += failed;
-    if (!show_) return;
+  /// The latest tally of `rank`; true when it changed.
+  bool update(int rank, const RankTally& tally) {
+    RankTally& t = tallies_.at(static_cast<std::size_t>(rank));
+    const bool changed = t != tally;
+    t = tally;
+    return changed;
+  }
+  bool all_finished() const {
+    return std::all_of(tallies_.begin(), tallies_.end(),
+                       [](const RankTally& t) { return t[3] != 0; });
+  }
+  void print() {
+    int done = 0, kept = 0, failed = 0;
+    for (const RankTally& t : tallies_) done += t[0], kept += t[1], failed += t[2];
+    if (!show_ || done == last_done_) return;
+    last_done_ = done;
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const int ran = done_ - kept_;
-    const double left = ran > 0 ? wall / ran * (total_ - done_) : 0.0;
+    const int ran = done - kept;
+    const double left = ran > 0 ? wall / ran * (total_ - done) : 0.0;
     fmt::print(stderr, "{}members {}/{} done ({} failed)  elapsed {}  left {}{}",
-               terminal_ ? "\r" : "", done_, total_, failed_, Progress::format_duration(wall),
+               terminal_ ? "\r" : "", done, total_, failed, Progress::format_duration(wall),
                Progress::format_duration(left), terminal_ ? "\x1b[K" : "\n");
     std::fflush(stderr);
+    printed_ = true;
   }
   void finish() const {
-    if (show_ && terminal_ && done_ > kept_) fmt::print(stderr, "\n");
+    if (show_ && terminal_ && printed_) fmt::print(stderr, "\n");
   }
 
  private:
-  int total_, done_, kept_, failed_ = 0;
-  bool show_, terminal_;
-  std::mutex mutex_;
+  int total_;
+  std::vector<RankTally> tallies_;
+  bool show_, terminal_, printed_ = false;
+  int last_done_ = 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
@@ -162,25 +182,77 @@ Plan make_plan(const EnsembleOptions& options) {
   return plan;
 }
 
-/// Runs `runs` on `jobs` threads, each taking the next member not yet taken.
+/// Runs `runs` on `jobs` threads, each taking the next member not yet taken. The calling thread
+/// keeps the progress: it sends this rank's tally to rank 0 as members finish (a last one when
+/// all are done), and on rank 0 gathers every rank's and prints the line, until every rank is
+/// done. Only this thread calls MPI (MPI_THREAD_FUNNELED).
 std::vector<MemberResult> run_members(const std::vector<MemberRun>& runs, const MemberSetup& setup,
-                                      int jobs, MemberProgress& progress) {
+                                      int jobs, int kept, const RankWorld& world,
+                                      MemberProgress& progress) {
   std::vector<MemberResult> results(runs.size());
   std::atomic<std::size_t> next{0};
+  std::atomic<int> done{kept}, failed{0}, workers{jobs};
+  std::mutex mutex;
+  std::condition_variable member_finished;
   auto worker = [&] {
     for (std::size_t k = next++; k < runs.size(); k = next++) {
       results[k] = run_member(runs[k], setup);
-      progress.member_done(results[k].failed);
+      failed += results[k].failed;
+      ++done;
+      member_finished.notify_one();
     }
+    --workers;
+    member_finished.notify_one();
   };
   std::vector<std::thread> threads;
-  for (int t = 1; t < jobs; ++t) threads.emplace_back(worker);
-  worker();
+  for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
+  RankTally sent{-1, 0, 0, 0};
+  for (bool finished = false; !finished;) {
+    {
+      std::unique_lock lock(mutex);
+      member_finished.wait_for(lock, std::chrono::milliseconds(200));
+    }
+    const bool mine_done = workers == 0;
+    const RankTally tally{done.load(), kept, failed.load(), mine_done ? 1 : 0};
+    if (world.rank() == 0) {
+      progress.update(0, tally);
+      for (const auto& [rank, received] : world.receive_tallies()) progress.update(rank, received);
+      progress.print();
+      finished = progress.all_finished();
+    } else {
+      if (tally != sent) world.send_tally(tally);
+      sent = tally;
+      finished = mine_done;
+    }
+  }
   for (std::thread& t : threads) t.join();
   return results;
 }
 
+/// Records the shared flow of this rank's members (from the first one's case, whose flow is
+/// every member's) in DIR/ensemble_flow_R.bin; returns its path.
+fs::path record_members_flow(const MemberRun& first, const Mesh& mesh, const fs::path& directory,
+                             int rank) {
+  const Case member_case = parse_case(first.case_text, first.case_path.string());
+  const fs::path path = directory / fmt::format("ensemble_flow_{}.bin", rank);
+  record_shared_flow(member_case, mesh, path.string(), true);
+  return path;
+}
+
 }  // namespace
+
+FlowSharing shared_flow_reason(const Case& base, const EnsembleConfig& config) {
+  if (!flow_can_be_shared(base))
+    return {false, "computed by each member (two-way mode: the bodies act on the water)"};
+  const bool varied = std::any_of(config.vary.begin(), config.vary.end(), [](const auto& v) {
+    return v.input == EnsembleInput::discharge_scale;
+  });
+  if (varied || (config.has_sweep && config.sweep_input == EnsembleInput::discharge_scale))
+    return {false, "computed by each member (discharge_scale varies the flow)"};
+  return {true, fmt::format("computed once and shared by the members ({} mode, no input varies "
+                            "the flow)",
+                            base.time.mode == CouplingMode::frozen ? "frozen" : "one-way")};
+}
 
 EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& world) {
   const auto start = std::chrono::steady_clock::now();
@@ -219,15 +291,45 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   }
   report.kept = static_cast<int>(mine.size());
   report.ran = static_cast<int>(runs.size());
-  const int share = report.kept + report.ran;
-  MemberProgress progress(share, report.kept, options.progress && world.rank() == 0);
   MemberSetup setup{&plan.mesh, &plan.geometry, plan.config.blocking,
                     options.jobs > 1 || world.size() > 1 ? 1 : 0};
-  for (MemberResult& r : run_members(runs, setup, std::max(1, options.jobs), progress)) {
+  FlowSharing sharing = shared_flow_reason(plan.base, plan.config);
+  if (!options.share_flow && sharing.shared)
+    sharing = {false, "computed by each member (--no-shared-flow)"};
+  report.flow_shared = sharing.shared;
+  report.flow_sharing = sharing.reason;
+  if (world.rank() == 0 && options.progress) fmt::print(stderr, "flow: {}\n", sharing.reason);
+  if (sharing.shared && !runs.empty()) {
+    const auto flow_start = std::chrono::steady_clock::now();
+    // On the members' thread count: with several jobs or ranks the cores are shared, and
+    // OpenMP threads waiting for a busy core cost more than they give (docs/performance.md).
+    if (setup.threads > 0) omp_set_num_threads(setup.threads);
+    try {
+      setup.shared_flow =
+          record_members_flow(runs.front(), plan.mesh, report.directory, world.rank());
+    } catch (const std::exception& e) {
+      // A flow that stops (unstable) stops every member the same way: each then computes its
+      // own and is reported failed with the message, and the ensemble still ends.
+      fmt::print(stderr,
+                 "flotsam: the shared flow could not be computed ({}); each member "
+                 "computes its own\n",
+                 e.what());
+      report.flow_shared = false;
+      report.flow_sharing = "computed by each member (the shared flow stopped)";
+    }
+    report.flow_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - flow_start).count();
+  }
+  MemberProgress progress(plan.config.total_members(), world.size(),
+                          options.progress && world.rank() == 0);
+  for (MemberResult& r :
+       run_members(runs, setup, std::max(1, options.jobs), report.kept, world, progress)) {
     report.member_seconds += r.wall_seconds;
+    report.step_seconds += r.step_seconds;
     mine.push_back(std::move(r));
   }
   progress.finish();
+  if (!setup.shared_flow.empty()) fs::remove(setup.shared_flow);
 
   std::string text;
   for (const MemberResult& r : mine) text += serialize_member(r);

@@ -8,6 +8,8 @@
 //   DIR/member_NNNN.yaml                 each member's case file (`flotsam run` reruns it)
 //   DIR/member_NNNN/                     its results, as `flotsam run` writes them, and
 //   DIR/member_NNNN/member.txt           its statistics, written last (complete members)
+//   DIR/ensemble_flow_R.bin              the shared flow of rank R while its members run
+//                                        (one-way and frozen cases, coupling/shared_flow.hpp)
 //   DIR/ensemble_summary.txt             the summary (also printed)
 //   DIR/ensemble_members.csv, ensemble_blocking.csv, ensemble_bodies.csv
 //   DIR/blocking_probability.png, jam_size.png, backwater_rise.png, stopping_points.png
@@ -17,7 +19,9 @@
 #include <filesystem>
 #include <string>
 
+#include "ensemble/ensemble_config.hpp"
 #include "ensemble/rank_world.hpp"
+#include "io/case.hpp"
 
 namespace flotsam {
 
@@ -29,6 +33,7 @@ struct EnsembleOptions {
   bool overwrite = false;  // start afresh instead of resuming an earlier ensemble of the folder
   bool progress = true;    // a progress line on stderr (rank 0)
   bool pictures = true;
+  bool share_flow = true;  // one-way and frozen: the flow computed once (shared_flow_reason)
 };
 
 struct EnsembleReport {
@@ -39,7 +44,20 @@ struct EnsembleReport {
   int failed = 0;       // in the whole ensemble (rank 0)
   double wall_seconds = 0.0;
   double member_seconds = 0.0;  // [s] sum of the runs' wall times (this rank)
+  double step_seconds = 0.0;    // [s] of which in their steps; the rest is set-up and output
+  bool flow_shared = false;     // the members replayed a flow computed once (on each rank)
+  std::string flow_sharing;     // why the flow is or is not shared (shared_flow_reason)
+  double flow_seconds = 0.0;    // [s] computing the shared flow (this rank)
 };
+
+/// Whether the members of an ensemble can share one flow, and why: the case's mode is one-way
+/// or frozen (the bodies leave the water as it is) and no input the ensemble varies or sweeps
+/// changes the flow (discharge_scale does). The text says which, for the log.
+struct FlowSharing {
+  bool shared = false;
+  std::string reason;
+};
+FlowSharing shared_flow_reason(const Case& base, const EnsembleConfig& config);
 
 EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& world);
 

@@ -80,6 +80,7 @@ EnsembleStatistics compute_ensemble_statistics(const std::vector<MemberResult>& 
     std::vector<std::vector<int>> gap_blocked;
     for (const BridgeLine& line : geometry.bridges) gap_blocked.emplace_back(line.gaps.size(), 0);
     std::vector<double> jam_size, rise, travel;
+    int any_trapped = 0, several = 0;  // members with >= 1, >= several_trapped bodies trapped
     for (const MemberResult& r : results) {
       if (r.inputs.sweep_index != static_cast<int>(s)) continue;
       if (r.failed) {
@@ -106,6 +107,8 @@ EnsembleStatistics compute_ensemble_statistics(const std::vector<MemberResult>& 
       sweep.passed += r.passed;
       sweep.left += r.left;
       sweep.trapped += r.trapped;
+      any_trapped += r.trapped >= 1;
+      several += r.trapped >= several_trapped;
       sweep.stranded += r.stranded;
       sweep.floating += r.floating;
     }
@@ -118,6 +121,8 @@ EnsembleStatistics compute_ensemble_statistics(const std::vector<MemberResult>& 
                                   static_cast<int>(g),
                                   wilson_interval(gap_blocked[b][g], sweep.members)});
     }
+    sweep.trapped_any = wilson_interval(any_trapped, sweep.members);
+    sweep.trapped_several = wilson_interval(several, sweep.members);
     sweep.jam_size = summarize(jam_size);
     sweep.backwater_rise = summarize(rise);
     sweep.travel = summarize(travel);
@@ -172,6 +177,11 @@ std::string format_ensemble_summary(const EnsembleStatistics& statistics,
       s += fmt::format("  blocked {:<16}{:>4}/{:<4} p {:.3f}  95% [{:.3f}, {:.3f}]\n", b.target,
                        b.blocked.successes, b.blocked.trials, b.blocked.p, b.blocked.lower,
                        b.blocked.upper);
+    for (const auto& [what, trapped] :
+         {std::pair{std::string(">= 1 trapped"), sweep.trapped_any},
+          std::pair{fmt::format(">= {} trapped", several_trapped), sweep.trapped_several}})
+      s += fmt::format("  {:<24}{:>4}/{:<4} p {:.3f}  95% [{:.3f}, {:.3f}]\n", what,
+                       trapped.successes, trapped.trials, trapped.p, trapped.lower, trapped.upper);
     s += format_sample("jam size", sweep.jam_size, "bodies");
     s += format_sample("backwater rise", sweep.backwater_rise, "m");
     s += format_sample("travel", sweep.travel, "m");

@@ -58,7 +58,13 @@ struct SweepStatistics {
   SampleSummary backwater_rise;            // largest rise at any bridge, per member [m]
   SampleSummary travel;                    // per body [m]
   double released = 0, passed = 0, left = 0, trapped = 0, stranded = 0, floating = 0;  // means
+  Proportion trapped_any;      // members with at least one body trapped in a jam at the end
+  Proportion trapped_several;  // ... with at least `several_trapped` bodies
 };
+
+/// "Several" bodies trapped at the end of a member (the paper's Fig. 17 question: do logs stay
+/// at the piers?) [bodies].
+inline constexpr int several_trapped = 3;
 
 struct EnsembleStatistics {
   std::vector<SweepStatistics> sweep;  // per sweep value, in the order given

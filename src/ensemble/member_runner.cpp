@@ -58,10 +58,17 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
     const bool has_bodies =
         !member_case.bodies.bodies.empty() || !member_case.bodies.releases.empty();
     if (!has_bodies) throw_input_error("{}: the member has no bodies", run.case_path.string());
-    RunOptions options{run.folder, true, true, false, false};
+    const RunOptions options{.output_directory = run.folder,
+                             .overwrite = true,
+                             .write_output = true,
+                             .progress = false,
+                             .shared_flow = setup.shared_flow};
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);
+    // The bodies' time holds their contacts' (resolved inside the bodies' sub-steps).
+    for (const Stage stage : {Stage::flow, Stage::bodies, Stage::reaction, Stage::diagnostics})
+      result.step_seconds += simulation.timer().seconds(stage);
   } catch (const std::exception& e) {
     result = MemberResult{};
     result.inputs = run.inputs;

@@ -21,12 +21,16 @@ struct MemberRun {
   std::filesystem::path folder;     // its results: DIR/member_NNNN/
 };
 
-/// What every member shares: the mesh (generated once), its jam geometry, the criterion.
+/// What every member shares: the mesh (generated once), its jam geometry, the criterion, and
+/// in one-way and frozen ensembles the flow.
 struct MemberSetup {
   const Mesh* mesh = nullptr;
   const JamGeometry* geometry = nullptr;
   BlockingCriterion criterion;
   int threads = 0;  // OpenMP threads of each member's flow; 0: the default
+  std::filesystem::path shared_flow =
+      {};  // the flow every member replays (coupling/shared_flow.hpp);
+           // "": each computes its own
 };
 
 MemberResult run_member(const MemberRun& run, const MemberSetup& setup);

@@ -20,7 +20,8 @@ RankWorld::RankWorld() {
   if (!launched_by_mpirun()) return;
   int initialized = 0;
   MPI_Initialized(&initialized);
-  if (!initialized) MPI_Init(nullptr, nullptr);
+  int provided = 0;
+  if (!initialized) MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   mpi_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
@@ -61,6 +62,32 @@ std::string RankWorld::broadcast(const std::string& text) const {
   return received;
 }
 
+namespace {
+constexpr int tally_tag = 17;  // the progress messages'
+}  // namespace
+
+void RankWorld::send_tally(const RankTally& tally) const {
+  if (!mpi_ || rank_ == 0) return;
+  // A few bytes: sent eagerly, so the send returns at once; rank 0 receives every one before the
+  // gather (it waits for each rank's last tally).
+  MPI_Send(tally.data(), static_cast<int>(tally.size()), MPI_INT, 0, tally_tag, MPI_COMM_WORLD);
+}
+
+std::vector<std::pair<int, RankTally>> RankWorld::receive_tallies() const {
+  std::vector<std::pair<int, RankTally>> received;
+  if (!mpi_ || rank_ != 0) return received;
+  for (;;) {
+    int waiting = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, tally_tag, MPI_COMM_WORLD, &waiting, &status);
+    if (!waiting) return received;
+    RankTally tally{};
+    MPI_Recv(tally.data(), static_cast<int>(tally.size()), MPI_INT, status.MPI_SOURCE, tally_tag,
+             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    received.emplace_back(status.MPI_SOURCE, tally);
+  }
+}
+
 void RankWorld::abort(int code) const {
   if (mpi_) MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);
@@ -75,6 +102,10 @@ std::vector<std::string> RankWorld::gather(const std::string& text) const {
 }
 std::string RankWorld::broadcast(const std::string& text) const {
   return text;
+}
+void RankWorld::send_tally(const RankTally& /*tally*/) const {}
+std::vector<std::pair<int, RankTally>> RankWorld::receive_tallies() const {
+  return {};
 }
 void RankWorld::abort(int code) const {
   std::exit(code);

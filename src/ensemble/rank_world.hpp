@@ -3,11 +3,18 @@
 // started (OpenMPI), which then deal the members among themselves and send their results to
 // rank 0. MPI is initialised only when the process was started by mpirun (the launcher's
 // environment variables are set) and the program was built with MPI (FLOTSAM_MPI); otherwise
-// the ensemble runs alone, without touching MPI.
+// the ensemble runs alone, without touching MPI. Only the thread that made the RankWorld calls
+// MPI (MPI_THREAD_FUNNELED): the members' threads never do.
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flotsam {
+
+/// A rank's progress over its members: done (with those kept from an earlier run), kept,
+/// failed, and 1 once all its members are done.
+using RankTally = std::array<int, 4>;
 
 class RankWorld {
  public:
@@ -24,6 +31,10 @@ class RankWorld {
   std::vector<std::string> gather(const std::string& text) const;
   /// Every rank receives rank 0's `text`.
   std::string broadcast(const std::string& text) const;
+  /// A rank other than 0 sends its tally to rank 0 (a message it never waits on).
+  void send_tally(const RankTally& tally) const;
+  /// Rank 0: the tallies that arrived since the last call, as (rank, tally), in arrival order.
+  std::vector<std::pair<int, RankTally>> receive_tallies() const;
   /// Stops every rank (an error on one rank would otherwise leave the others waiting).
   [[noreturn]] void abort(int code) const;
 

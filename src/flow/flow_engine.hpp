@@ -62,6 +62,10 @@ class FlowEngine {
   /// `prefix`.*; and the same read back (InputError naming the file when it does not fit).
   virtual void save(ArchiveWriter& w, const std::string& prefix) const = 0;
   virtual void restore(ArchiveReader& r, const std::string& prefix) = 0;
+  /// A shared flow (coupling/shared_flow.hpp): the state after a step, as save() wrote it, read
+  /// back in place of computing the step. The state before it stays the start of the interval
+  /// the bodies sample, as after step().
+  virtual void restore_step(ArchiveReader& r, const std::string& prefix) = 0;
   /// Called after each checkpoint: the engine drops what a restarted run would not have (so
   /// that the run that goes on and a restarted one stay the same bit for bit).
   virtual void after_checkpoint() {}

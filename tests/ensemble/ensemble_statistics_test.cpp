@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "ensemble/member_case.hpp"
 
@@ -74,6 +77,42 @@ double exact_coverage(int n, double p) {
 // Synthetic ensembles: n members, each blocking with probability p (a Bernoulli draw from the
 // members' keyed streams). Over R ensembles the share whose interval holds p must be the exact
 // coverage within 4 binomial standard deviations, and that coverage near the nominal 95%.
+// Members trapping 0, 1, 3, 4 and 2 bodies and one failed member: at least one trapped in 4 of
+// the 5 that ran, at least three in 2; the intervals are Wilson's of those counts.
+TEST(EnsembleStatistics, MembersWithBodiesTrappedByHand) {
+  EnsembleConfig config;
+  config.members = 6;
+  std::vector<MemberResult> results;
+  for (const int trapped : {0, 1, 3, -1, 4, 2}) {
+    MemberResult r;
+    r.inputs.member = static_cast<int>(results.size());
+    r.failed = trapped < 0;
+    r.trapped = std::max(trapped, 0);
+    results.push_back(r);
+  }
+  const EnsembleStatistics e = compute_ensemble_statistics(results, config, JamGeometry{});
+  ASSERT_EQ(e.sweep.size(), 1u);
+  const SweepStatistics& s = e.sweep.front();
+  EXPECT_EQ(s.members, 5);
+  EXPECT_EQ(s.failed, 1);
+  EXPECT_EQ(s.trapped_any.successes, 4);
+  EXPECT_EQ(s.trapped_any.trials, 5);
+  EXPECT_EQ(s.trapped_several.successes, 2);
+  EXPECT_EQ(s.trapped_several.trials, 5);
+  const Proportion any = wilson_interval(4, 5), several = wilson_interval(2, 5);
+  EXPECT_EQ(s.trapped_any.lower, any.lower);
+  EXPECT_EQ(s.trapped_several.upper, several.upper);
+  EXPECT_DOUBLE_EQ(s.trapped, 2.0);  // (0 + 1 + 3 + 4 + 2) / 5
+  const std::string summary = format_ensemble_summary(e, config, "by_hand");
+  // Wilson at 4/5: centre (0.8 + z^2/10) / (1 + z^2/5) = 0.6697, half 0.2941 (by hand).
+  EXPECT_NE(summary.find("  >= 1 trapped               4/5    p 0.800  95% [0.376, 0.964]\n"),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("  >= 3 trapped               2/5    p 0.400  95% [0.118, 0.769]\n"),
+            std::string::npos)
+      << summary;
+}
+
 TEST(WilsonInterval, CoverageOfBernoulliMembersOverManySeeds) {
   const int n = 40, replications = 4000;
   for (const double p : {0.1, 0.3, 0.5}) {

@@ -1,7 +1,8 @@
-# `flotsam ensemble` (label cli): determinism over --jobs and MPI ranks, resume, a failing member
+# `flotsam ensemble` (label cli): determinism over --jobs and MPI ranks, resume, a failing member,
+# the shared flow
 # (tests/scripts/ensemble_check.sh says what each checks).
 set(ensemble_work ${CMAKE_CURRENT_BINARY_DIR}/ensemble_work)
-set(ensemble_modes reference jobs2 resume failing_member)
+set(ensemble_modes reference jobs2 resume failing_member shared_flow discharge_varies)
 find_program(FLOTSAM_MPIRUN mpirun)
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
   list(APPEND ensemble_modes mpirun2)
@@ -13,7 +14,7 @@ foreach(mode ${ensemble_modes})
                    ${ensemble_work})
   set_tests_properties(cli.ensemble_${mode} PROPERTIES LABELS "cli"
                        ENVIRONMENT "${test_environment}")
-  if(NOT mode STREQUAL "reference" AND NOT mode STREQUAL "failing_member")
+  if(mode MATCHES "^(jobs2|resume|mpirun2)$")
     set_tests_properties(cli.ensemble_${mode} PROPERTIES FIXTURES_REQUIRED cli_ensemble_reference
                          RESOURCE_LOCK ensemble_work)
   endif()

@@ -2,12 +2,17 @@
 # Checks of `flotsam ensemble` on tests/scripts/tiny_ensemble.yaml (registered by ensemble.cmake):
 #   reference        --jobs 1: the reference ensemble
 #   jobs2            --jobs 2 gives the same summary and tables, byte for byte
-#   mpirun2          mpirun -n 2 gives the same summary and tables, byte for byte
+#   mpirun2          mpirun -n 2 gives the same summary and tables, byte for byte, and rank 0's
+#                    progress line counts the members of every rank
 #   resume           an interrupted ensemble (two members without their member.txt, one of them
 #                    half-written) resumes: the complete members are kept, the others rerun, and
 #                    the summary is the reference's
 #   failing_member   a member whose drawn input is refused is reported with its inputs, and the
 #                    other members complete
+#   shared_flow      in one-way mode the members replay one flow computed once: the summary,
+#                    tables and every member's body tracks are those of members that compute
+#                    their own flow (--no-shared-flow), byte for byte; the flow's file is removed
+#   discharge_varies an ensemble varying discharge_scale does not share its flow
 set -euo pipefail
 mode=$1 flotsam=$2 case=$3 work=$4
 mkdir -p "$work" && cd "$work"
@@ -26,9 +31,11 @@ case $mode in
     same jobs2 ;;
   mpirun2)
     root=(); [ "$(id -u)" = 0 ] && root=(--allow-run-as-root)
-    mpirun "${root[@]}" --oversubscribe -n 2 "$flotsam" ensemble "$case" -o mpi2 --overwrite -q \
-        --no-pictures >/dev/null
-    same mpi2 ;;
+    mpirun "${root[@]}" --oversubscribe -n 2 "$flotsam" ensemble "$case" -o mpi2 --overwrite \
+        --no-pictures >/dev/null 2>progress.txt
+    same mpi2
+    # Rank 0's progress line counts the members of both ranks (2 each).
+    tail -1 progress.txt | grep -q "members 4/4 done" || { cat progress.txt; exit 1; } ;;
   resume)
     rm -rf resume && cp -r reference resume
     sed -i "s|$work/reference|$work/resume|g" resume/member_*.yaml
@@ -48,4 +55,29 @@ case $mode in
     echo "$out" | grep -q "4 members (2 per value x 2 values), 2 failed"
     echo "$out" | grep -q "member_0000 (log_length = 0.3 m, .*seed [0-9]*): .*exceed the shortest"
     echo "$out" | grep -q "log_length = 20 m: 2 members, 0 failed" ;;
+  shared_flow)
+    sed 's/mode: two-way/mode: one-way/' "$case" > one_way.yaml
+    out=$("$flotsam" ensemble one_way.yaml -o shared --overwrite -q --no-pictures)
+    echo "$out" | grep -q "flow             computed once and shared by the members (one-way" \
+        || { echo "FAIL: $out"; exit 1; }
+    out=$("$flotsam" ensemble one_way.yaml -o own --overwrite -q --no-pictures --no-shared-flow)
+    echo "$out" | grep -q "flow             computed by each member (--no-shared-flow)" \
+        || { echo "FAIL: $out"; exit 1; }
+    for f in ensemble_summary.txt ensemble_members.csv ensemble_blocking.csv ensemble_bodies.csv \
+        member_000{0,1,2,3}/member_000{0,1,2,3}_bodies.csv; do
+      [ -e "own/$f" ] || continue
+      cmp "own/$f" "shared/$f" || { echo "FAIL: shared/$f differs from own/$f"; exit 1; }
+    done
+    [ "$(ls own/member_000*/member_000*_bodies.csv | wc -l)" = 4 ] || { echo "FAIL: tracks"; exit 1; }
+    ! ls shared/ensemble_flow_* 2>/dev/null || { echo "FAIL: the shared flow was left"; exit 1; }
+    echo "shared flow: same summary, tables and tracks" ;;
+  discharge_varies)
+    sed -e 's/mode: two-way/mode: one-way/' \
+        -e 's/inflow: {type: elevation, value: 4.0}/inflow: {type: discharge, value: 240}/' \
+        -e 's/restitution: {uniform: \[0.2, 0.8\]}/discharge_scale: {uniform: [0.8, 1.2]}/' \
+        "$case" > discharge.yaml
+    grep -q "discharge_scale" discharge.yaml
+    out=$("$flotsam" ensemble discharge.yaml -o discharge --overwrite -q --no-pictures)
+    echo "$out" | grep -q "flow             computed by each member (discharge_scale varies the flow)" \
+        || { echo "FAIL: $out"; exit 1; } ;;
 esac

@@ -27,6 +27,8 @@ class FemEngine final : public FlowEngine {
   void write_fields(const std::string& path, double t) const override;
   void save(ArchiveWriter& w, const std::string& prefix) const override;
   void restore(ArchiveReader& r, const std::string& prefix) override;
+  /// The checkpoint holds the state before the step too (BDF2's history): a restore.
+  void restore_step(ArchiveReader& r, const std::string& prefix) override { restore(r, prefix); }
   void after_checkpoint() override { solver_.start_fresh_factorisation(); }
 
   const ShallowWaterSolver& solver() const { return solver_; }

@@ -170,6 +170,18 @@ void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
 }
 
 void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
+  restore_state(r, prefix);
+  field_->reset_to_state();
+  nodal_valid_ = false;
+}
+
+void FvEngine::restore_step(ArchiveReader& r, const std::string& prefix) {
+  restore_state(r, prefix);
+  field_->advance_to_state();
+  nodal_valid_ = false;
+}
+
+void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix) {
   ConservedState U;
   U.time = r.read_value<double>(prefix + ".time");
   U.h = r.read<double>(prefix + ".h");
@@ -187,8 +199,6 @@ void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
   solver_.restore_sub_steps(
       {static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1), s.at(2)});
   envelope_.restore(r, prefix);
-  field_->reset_to_state();
-  nodal_valid_ = false;
 }
 
 std::string FvEngine::summary() const {

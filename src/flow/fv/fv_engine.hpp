@@ -30,6 +30,7 @@ class FvEngine final : public FlowEngine {
   void write_fields(const std::string& path, double t) const override;
   void save(ArchiveWriter& w, const std::string& prefix) const override;
   void restore(ArchiveReader& r, const std::string& prefix) override;
+  void restore_step(ArchiveReader& r, const std::string& prefix) override;
   std::string summary() const override;
   std::vector<std::string> write_envelope_rasters(const std::string& prefix,
                                                   const RasterGrid& grid) const override;
@@ -40,6 +41,9 @@ class FvEngine final : public FlowEngine {
   const FiniteVolumeSolver& solver() const { return solver_; }
 
  private:
+  /// The solver's state, balance, sub-step counts and envelopes as save() wrote them.
+  void restore_state(ArchiveReader& r, const std::string& prefix);
+
   const Mesh& mesh_;
   const Case& case_;
   FiniteVolumeSolver solver_;

@@ -1,0 +1,130 @@
+// Verifies the shared flow (coupling/shared_flow.hpp): a one-way or frozen run that replays a
+// flow recorded once ends in the same state, bit for bit, as the run that computes its own flow
+// (bodies with contacts and a seeded release, the flow, the water balance, the tables written),
+// with either engine; and a shared flow recorded for other times is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../support/scratch_path.hpp"
+#include "../support/straight_channel.hpp"
+#include "core/error.hpp"
+#include "coupling/shared_flow.hpp"
+#include "coupling/simulation.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+namespace fs = std::filesystem;
+
+Case shared_case(CouplingMode mode, FlowEngineKind engine) {
+  Case c = test::straight_channel_case("shared", 40.0, 2.0);
+  c.flow.engine = engine;
+  c.flow.viscosity = 0.01;
+  c.flow.friction = FrictionLaw::manning;
+  c.flow.friction_coefficient = 0.03;
+  c.time = {.end = 10.0, .step = 1.0, .mode = mode};
+  c.time.spin_up_step = 5.0;
+  c.time.steady_method = SteadyMethod::march;
+  c.output.interval = 4.0;       // outputs at 0, 4, 8 and the end 10 s
+  for (int k = 0; k < 3; ++k) {  // three logs that collide: the middle one is slow
+    BodySpec log;
+    log.length = 6.0;
+    log.width = 0.5;
+    log.position = Vec2(40.0 + 7.0 * k, 10.0);
+    log.velocity = Vec2(k == 1 ? 0.0 : 2.0 - k, 0.0);
+    c.bodies.bodies.push_back(log);
+  }
+  Release line;
+  line.line_start = Vec2(20.0, 3.0);
+  line.line_end = Vec2(20.0, 17.0);
+  line.end_time = 8.0;
+  line.rate = 30.0;  // [1/min]: one body every 2 s
+  line.length_min = 2.0, line.length_max = 5.0;
+  line.width_min = 0.2, line.width_max = 0.4;
+  line.seed = 7;
+  c.bodies.releases = {line};
+  return c;
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct SharedFlowCase {
+  CouplingMode mode;
+  FlowEngineKind engine;
+  const char* name;
+};
+
+class SharedFlow : public testing::TestWithParam<SharedFlowCase> {};
+
+TEST_P(SharedFlow, ReplayedFlowMovesTheBodiesAsTheComputedFlowBitForBit) {
+  const SharedFlowCase p = GetParam();
+  const fs::path base = test::scratch_path(std::string("flotsam_shared_flow_test_") + p.name);
+  fs::remove_all(base);
+  fs::create_directories(base);
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  const Case run_case = shared_case(p.mode, p.engine);
+  record_shared_flow(run_case, mesh, (base / "flow.bin").string(), true);
+
+  Simulation own(run_case, mesh,
+                 {.output_directory = base / "own", .write_output = true, .progress = false});
+  own.run();
+  Simulation replay(run_case, mesh,
+                    {.output_directory = base / "replay",
+                     .write_output = true,
+                     .progress = false,
+                     .shared_flow = base / "flow.bin"});
+  replay.run();
+
+  ASSERT_EQ(own.bodies().size(), replay.bodies().size());
+  ASSERT_GE(own.bodies().size(), 6);  // three placed, at least three released
+  for (int i = 0; i < own.bodies().size(); ++i) {
+    EXPECT_EQ(own.bodies().position[i].x(), replay.bodies().position[i].x()) << "body " << i;
+    EXPECT_EQ(own.bodies().position[i].y(), replay.bodies().position[i].y()) << "body " << i;
+    EXPECT_EQ(own.bodies().angle[i], replay.bodies().angle[i]) << "body " << i;
+  }
+  EXPECT_EQ(own.flow().eta(), replay.flow().eta());
+  EXPECT_EQ(own.flow().water_balance().volume, replay.flow().water_balance().volume);
+  EXPECT_EQ(own.time(), replay.time());
+  // What the runs wrote: the body tracks and the checkpoint (a restart continues either).
+  for (const char* file : {"shared_bodies.csv", "checkpoint.bin"})
+    EXPECT_EQ(text_of(base / "own" / file), text_of(base / "replay" / file)) << file;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ModesAndEngines, SharedFlow,
+    testing::Values(SharedFlowCase{CouplingMode::one_way, FlowEngineKind::fv, "one_way_fv"},
+                    SharedFlowCase{CouplingMode::one_way, FlowEngineKind::fem, "one_way_fem"},
+                    SharedFlowCase{CouplingMode::frozen, FlowEngineKind::fv, "frozen_fv"}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST(SharedFlowFile, RecordedForOtherTimesIsRefused) {
+  const fs::path base = test::scratch_path("flotsam_shared_flow_test_refused");
+  fs::remove_all(base);
+  fs::create_directories(base);
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 20, .nx = 40, .ny = 8});
+  Case recorded = shared_case(CouplingMode::one_way, FlowEngineKind::fv);
+  record_shared_flow(recorded, mesh, (base / "flow.bin").string(), true);
+  Case longer = recorded;
+  longer.time.end = 12.0;
+  Simulation run(longer, mesh,
+                 {.output_directory = base / "run",
+                  .write_output = true,
+                  .progress = false,
+                  .shared_flow = base / "flow.bin"});
+  EXPECT_THROW(run.initialize(), RunError);
+  Case two_way = recorded;
+  two_way.time.mode = CouplingMode::two_way;
+  EXPECT_THROW(record_shared_flow(two_way, mesh, (base / "two_way.bin").string(), true), RunError);
+}
+
+}  // namespace
+}  // namespace flotsam
