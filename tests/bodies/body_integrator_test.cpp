@@ -104,7 +104,7 @@ std::vector<unsigned char> seeded_run(int threads) {
   const AnalyticFlow flow(spec);
   Release r;
   r.line_start = {0, 0};
-  r.line_end = {0, 300};
+  r.line_end = {0, 6000};  // long enough for 600 logs of up to 20 m clear of one another
   r.end_time = 100;
   r.rate = 9000;  // 150 per second: 600 bodies, enough for the parallel loop
   r.length_min = 4, r.length_max = 20;
