@@ -4,6 +4,8 @@
 // default run) and log_jam_at_piers_slow.cpp (2,000 logs before 41 piers).
 // Reference: static equilibrium of a jam (spec 4.3, "resting contact must be stable"); the force
 // stands in for the drag (M-6) of a steady flow.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -64,6 +66,23 @@ inline JamOutcome settle_and_hold(JamScene& scene, ContactWorld& world, int sett
     out.worst.farthest = std::max(out.worst.farthest, s.farthest);
   }
   return out;
+}
+
+// The jam of `scene` settled (at most 6,000 steps, 200 quiet ones) and held for 1,000 steps: every
+// speed under 1e-3 m/s, every overlap under 1% of a log's width, no log past the piers. The
+// figures are recorded as test properties (`--gtest_output=xml`).
+inline void expect_jam_settles_and_holds(JamScene& scene, ContactWorld& world) {
+  const double width = scene.bodies.width[0];  // l [m]
+  const JamOutcome out = settle_and_hold(scene, world, 6000, 200, 1000);
+  SCOPED_TRACE(::testing::Message() << "settled after " << out.settled_after << " steps");
+  ASSERT_TRUE(out.settled);
+  ::testing::Test::RecordProperty("settled_after_steps", out.settled_after);
+  ::testing::Test::RecordProperty("fastest_micrometres_per_s",
+                                  static_cast<int>(1e6 * out.worst.fastest));
+  ::testing::Test::RecordProperty("deepest_micrometres", static_cast<int>(1e6 * out.worst.deepest));
+  EXPECT_LT(out.worst.fastest, 1e-3);
+  EXPECT_LT(out.worst.deepest, 0.01 * width);
+  EXPECT_LT(out.worst.farthest, scene.pier_x);
 }
 
 }  // namespace flotsam::test

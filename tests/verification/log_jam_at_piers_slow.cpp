@@ -16,16 +16,7 @@ TEST(LogJamAtPiers, TwoThousandLogsComeToRestAgainstFortyOnePiersAndStay) {
   spec.pier_count = 41;
   JamScene scene = make_jam_scene(spec);
   ContactWorld world(jam_contact_config());
-  const double width = scene.bodies.width[0];  // l [m]
-  const test::JamOutcome out = test::settle_and_hold(scene, world, 6000, 200, 1000);
-  SCOPED_TRACE(::testing::Message() << "settled after " << out.settled_after << " steps");
-  ASSERT_TRUE(out.settled);
-  RecordProperty("settled_after_steps", out.settled_after);
-  RecordProperty("fastest_micrometres_per_s", static_cast<int>(1e6 * out.worst.fastest));
-  RecordProperty("deepest_micrometres", static_cast<int>(1e6 * out.worst.deepest));
-  EXPECT_LT(out.worst.fastest, 1e-3);
-  EXPECT_LT(out.worst.deepest, 0.01 * width);
-  EXPECT_LT(out.worst.farthest, scene.pier_x);
+  test::expect_jam_settles_and_holds(scene, world);
 }
 
 }  // namespace
