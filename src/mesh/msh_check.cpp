@@ -532,6 +532,17 @@ void read_elements(Cursor& in, MshFile& msh) {
       in.integer(What("the number of tags of element {} (2: physical and elementary)", element), 2,
                  2);
     };
+    const auto physical_elementary_and_nodes = [&](long tag, const ElementType& type) {
+      in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
+      in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
+      for (int k = 0; k < type.nodes; ++k) {
+        const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
+        if (!msh.has_node(node))
+          in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
+      }
+      if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
+      if (type.type == 1 || type.type == 8) ++msh.counts.lines;
+    };
     while (left(total) > 0) {
       if (in.binary) {
         const ElementType& type =
@@ -541,15 +552,7 @@ void read_elements(Cursor& in, MshFile& msh) {
         for (long i = 0; i < n; ++i) {
           const long tag = in.integer("an element tag", 1, largest_tag);
           msh.element_tags.push_back(tag);
-          in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
-          in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
-          for (int k = 0; k < type.nodes; ++k) {
-            const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
-            if (!msh.has_node(node))
-              in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
-          }
-          if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
-          if (type.type == 1 || type.type == 8) ++msh.counts.lines;
+          physical_elementary_and_nodes(tag, type);
         }
       } else {
         const long tag = in.integer("an element tag", 1, largest_tag);
@@ -557,15 +560,7 @@ void read_elements(Cursor& in, MshFile& msh) {
         const ElementType& type =
             known_type(in, in.integer(What("element {}'s type", tag), 1, largest_tag));
         tags(tag);
-        in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
-        in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
-        for (int k = 0; k < type.nodes; ++k) {
-          const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
-          if (!msh.has_node(node))
-            in.fail("element {} refers to node {}, which $Nodes does not define", tag, node);
-        }
-        if (type.type == 2 || type.type == 9) ++msh.counts.triangles;
-        if (type.type == 1 || type.type == 8) ++msh.counts.lines;
+        physical_elementary_and_nodes(tag, type);
       }
     }
     check_tags(in, msh.element_tags, "element", 0, 0, false);
