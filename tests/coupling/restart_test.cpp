@@ -32,23 +32,7 @@ Case restart_case(double end) {
   c.time = {.end = end, .step = 1.0, .mode = CouplingMode::two_way};
   c.output.interval = 4.0;
   c.output.probes = {{"gauge", Vec2(100.0, 10.0)}};
-  for (int k = 0; k < 3; ++k) {  // three logs that collide: the middle one is slow
-    BodySpec log;
-    log.length = 6.0;
-    log.width = 0.5;
-    log.position = Vec2(40.0 + 7.0 * k, 10.0);
-    log.velocity = Vec2(k == 1 ? 0.0 : 2.0 - k, 0.0);
-    c.bodies.bodies.push_back(log);
-  }
-  Release line;
-  line.line_start = Vec2(20.0, 3.0);
-  line.line_end = Vec2(20.0, 17.0);
-  line.end_time = 10.0;
-  line.rate = 30.0;  // [1/min]: one body every 2 s
-  line.length_min = 2.0, line.length_max = 5.0;
-  line.width_min = 0.2, line.width_max = 0.4;
-  line.seed = 7;
-  c.bodies.releases = {line};
+  test::add_colliding_logs_and_release(c, 10.0);
   return c;
 }
 

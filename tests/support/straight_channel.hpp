@@ -27,4 +27,27 @@ inline Case straight_channel_case(const std::string& name, double Q, double H0) 
   return straight_channel_case(name, TimeSeries(Q), H0);
 }
 
+/// The bodies of the restart and shared-flow tests: three logs that collide (the middle one
+/// slow), and a line at x = 20 m releasing one small log every 2 s until `release_end` [s] from
+/// a seeded stream.
+inline void add_colliding_logs_and_release(Case& c, double release_end) {
+  for (int k = 0; k < 3; ++k) {
+    BodySpec log;
+    log.length = 6.0;
+    log.width = 0.5;
+    log.position = Vec2(40.0 + 7.0 * k, 10.0);
+    log.velocity = Vec2(k == 1 ? 0.0 : 2.0 - k, 0.0);
+    c.bodies.bodies.push_back(log);
+  }
+  Release line;
+  line.line_start = Vec2(20.0, 3.0);
+  line.line_end = Vec2(20.0, 17.0);
+  line.end_time = release_end;
+  line.rate = 30.0;  // [1/min]: one body every 2 s
+  line.length_min = 2.0, line.length_max = 5.0;
+  line.width_min = 0.2, line.width_max = 0.4;
+  line.seed = 7;
+  c.bodies.releases = {line};
+}
+
 }  // namespace flotsam::test
