@@ -25,6 +25,7 @@
 #include "coupling/simulation.hpp"
 #include "io/binary_archive.hpp"
 #include "io/case_digest.hpp"
+#include "io/checksum.hpp"
 
 namespace flotsam {
 
@@ -77,8 +78,9 @@ std::string mesh_checksum(const Mesh& mesh) {
 }  // namespace
 
 std::vector<CaseSetting> Simulation::run_settings() const {
+  if (mesh_checksum_.empty()) mesh_checksum_ = mesh_checksum(mesh_);  // the mesh never changes
   std::vector<CaseSetting> settings = case_.settings;
-  settings.push_back({"the mesh (its nodes, elements and groups)", mesh_checksum(mesh_)});
+  settings.push_back({"the mesh (its nodes, elements and groups)", mesh_checksum_});
   return settings;
 }
 
