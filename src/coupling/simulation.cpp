@@ -244,9 +244,11 @@ void Simulation::open_output(const std::vector<double>* output_times) {
   output_ = output_times
                 ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
                                               *output_times, has_bodies_, time_)
-                : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
-                                              options_.overwrite || case_.output.overwrite,
-                                              case_.file, inputs);
+                : std::make_unique<RunOutput>(
+                      output_directory(), case_.name, mesh_, run_layout(),
+                      options_.overwrite || case_.output.overwrite, case_.file, inputs,
+                      shared_flow_ ? shared_fields_folder(shared_flow_->path())
+                                   : std::filesystem::path());
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;

@@ -329,7 +329,7 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
     mine.push_back(std::move(r));
   }
   progress.finish();
-  if (!setup.shared_flow.empty()) fs::remove(setup.shared_flow);
+  if (!setup.shared_flow.empty()) remove_shared_flow(setup.shared_flow);
 
   std::string text;
   for (const MemberResult& r : mine) text += serialize_member(r);
