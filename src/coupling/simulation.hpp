@@ -106,6 +106,7 @@ class Simulation {
 
   Case case_;
   Mesh mesh_;
+  mutable std::string mesh_checksum_;  // run_settings: computed once
   RunOptions options_;
   bool has_bodies_ = false;
 
