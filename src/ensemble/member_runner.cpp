@@ -73,7 +73,8 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
                              .overwrite = true,
                              .write_output = true,
                              .progress = false,
-                             .shared_flow = setup.shared_flow};
+                             .shared_flow = setup.shared_flow,
+                             .mesh_setup = setup.mesh_setup};
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);
