@@ -17,7 +17,8 @@ PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-f
             libeigen3-dev libsuitesparse-dev libgmsh-dev libyaml-cpp-dev libcli11-dev \
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
             libmuparser-dev libgdal-dev libopenblas0-openmp time python3-gdal python3-numpy \
-            libopenmpi-dev openmpi-bin valgrind clang libclang-rt-14-dev libbox2d-dev
+            libopenmpi-dev openmpi-bin valgrind clang libclang-rt-14-dev libbox2d-dev \
+            libxxhash-dev
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
                $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
@@ -104,12 +105,17 @@ bench: build
 	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
 	@echo "== ensemble examples/bridge_blocking.yaml on 1 job (12 members per length) and on 2 jobs"
 	@echo "   (all 96): members per minute, the shared flow, set-up and output per member"
-	@echo "   (docs/performance.md, Ensembles)"
+	@echo "   (docs/performance.md, Ensembles). Into new folders: the last results are moved"
+	@echo "   aside and deleted after the runs (files made just after a mass deletion are slow here)"
+	@for j in 1 2; do rm -rf $(BUILD)/bench_runs/bridge_blocking_$$j.old; \
+	    [ ! -e $(BUILD)/bench_runs/bridge_blocking_$$j ] || mv $(BUILD)/bench_runs/bridge_blocking_$$j \
+	    $(BUILD)/bench_runs/bridge_blocking_$$j.old; done
 	@for j in 1 2; do m=$$([ $$j = 1 ] && echo 12 || echo 96); \
 	    OMP_NUM_THREADS=1 /usr/bin/time -f "bridge_blocking ensemble, $$j job(s): %e s wall, %U s user" \
 	    $(BUILD)/flotsam ensemble examples/bridge_blocking.yaml -o $(BUILD)/bench_runs/bridge_blocking_$$j \
-	    --members $$m --overwrite --jobs $$j -q --no-pictures \
+	    --members $$m --jobs $$j -q --no-pictures \
 	    | grep -E "^ensemble|^members|^flow|wall time"; done
+	@rm -rf $(BUILD)/bench_runs/bridge_blocking_1.old $(BUILD)/bench_runs/bridge_blocking_2.old
 	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \
 	          $(BUILD)/bench_runs/bridge_piers_fv.yaml $(BUILD)/bench_runs/bridge_flood_fv.yaml \
 	          examples/dam_break_valley.yaml; do \

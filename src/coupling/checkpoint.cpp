@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "contact/impulse_solver.hpp"
+#include "coupling/mesh_setup.hpp"
 #include "coupling/simulation.hpp"
 #include "io/binary_archive.hpp"
 #include "io/case_digest.hpp"
@@ -58,27 +59,12 @@ struct archive_fields<IntegrationStats> {
 };
 static_assert(sizeof(IntegrationStats) == 32, "list the new member in archive_fields");
 
-namespace {
-
-/// The mesh the run was computed on, whether read or generated: nodes, elements, groups.
-std::string mesh_checksum(const Mesh& mesh) {
-  Checksum sum;
-  sum.add(mesh.nodes.data(), mesh.nodes.size() * sizeof(Vec2));
-  sum.add(mesh.elements.data(), mesh.elements.size() * sizeof(mesh.elements.front()));
-  for (const BoundaryEdge& e : mesh.boundary) {
-    sum.add(&e.element, sizeof e.element);
-    sum.add(&e.local_edge, sizeof e.local_edge);
-    sum.add(&e.group, sizeof e.group);
-  }
-  for (const std::string& group : mesh.group_names) sum.add(group + '\n');
-  return sum.hex();
-}
-
-}  // namespace
-
 std::vector<CaseSetting> Simulation::run_settings() const {
+  if (mesh_checksum_.empty())  // once: the mesh never changes (or the ensemble's, the same)
+    mesh_checksum_ =
+        options_.mesh_setup ? options_.mesh_setup->mesh_checksum : mesh_checksum(mesh_);
   std::vector<CaseSetting> settings = case_.settings;
-  settings.push_back({"the mesh (its nodes, elements and groups)", mesh_checksum(mesh_)});
+  settings.push_back({"the mesh (its nodes, elements and groups)", mesh_checksum_});
   return settings;
 }
 

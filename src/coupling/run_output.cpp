@@ -2,26 +2,35 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 
 #include "core/error.hpp"
 #include "io/output_directory.hpp"
 #include "io/run_state.hpp"
+#include "io/shared_file.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace flotsam {
 
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const RunLayout& layout, bool overwrite,
-                     const std::string& case_file, const std::vector<ProtectedInput>& inputs)
+                     const std::string& case_file, const std::vector<ProtectedInput>& inputs,
+                     const std::filesystem::path& shared_folder)
     : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs)),
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
-      flow_index_((directory_ / (name + ".pvd")).string()),
-      body_index_((directory_ / (name + "_bodies.pvd")).string()) {
-  write_boundary_vtp((directory_ / "boundary.vtp").string(), mesh);
+      flow_index_((directory_ / (name + ".pvd")).string(), PvdWriter::Start::at_first_add),
+      body_index_((directory_ / (name + "_bodies.pvd")).string(), PvdWriter::Start::at_first_add),
+      shared_folder_(shared_folder) {
+  const auto write_boundary = [&](const std::string& path) { write_boundary_vtp(path, mesh); };
+  if (shared_folder_.empty())
+    write_boundary((directory_ / "boundary.vtp").string());
+  else
+    write_shared_file(shared_folder_, "boundary.vtp", directory_ / "boundary.vtp", write_boundary);
   write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group_});
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
                                          balance_columns(mesh));
@@ -68,7 +77,13 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
 void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
                       const std::vector<std::uint8_t>& jammed) {
   const std::string file = fmt::format("flow_{:06d}.vtu", count());
-  flow.write_fields((directory_ / file).string(), t);
+  const auto write_fields = [&](const std::string& path) { flow.write_fields(path, t); };
+  if (shared_folder_.empty())
+    write_fields((directory_ / file).string());
+  else  // the time's bits name it: the fields of one shared flow depend on the time alone
+    write_shared_file(shared_folder_,
+                      fmt::format("flow_at_{:016x}.vtu", std::bit_cast<std::uint64_t>(t)),
+                      directory_ / file, write_fields);
   flow_index_.add(t, file);
   if (raster_grid_) flow.write_envelope_rasters((directory_ / name_).string(), *raster_grid_);
   if (with_bodies) write_bodies(bodies, t);

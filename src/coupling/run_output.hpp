@@ -39,9 +39,14 @@ struct RunLayout {
 class RunOutput {
  public:
   /// Prepares the folder (io/output_directory.hpp policy) and writes boundary.vtp and run.bin.
+  /// `shared_folder` (or ""): the runs replaying one shared flow (coupling/shared_flow.hpp) have
+  /// the same mesh and write the same boundary.vtp, and the same flow_NNNNNN.vtu at the same
+  /// time: each is written once into that folder (the fields named by their time) and linked
+  /// into the folder of every run after (io/shared_file.hpp).
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
             const RunLayout& layout, bool overwrite, const std::string& case_file,
-            const std::vector<ProtectedInput>& inputs);
+            const std::vector<ProtectedInput>& inputs,
+            const std::filesystem::path& shared_folder = {});
 
   /// Continues the output of a run in `directory` (a restart from the checkpoint at
   /// `resume_time` [s]): the indexes list again the `times` already written, the tables are
@@ -79,10 +84,11 @@ class RunOutput {
   std::string name_;
   std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
   bool rain_ = false;                     // the balance table has rain and infiltration columns
-  PvdWriter flow_index_, body_index_;
-  std::vector<double> times_;  // [s] of each output written, in order
+  PvdWriter flow_index_, body_index_;     // each written from its first file on
+  std::vector<double> times_;             // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;
-  std::optional<CsvResume> resume_;  // tables continue files of an earlier run (restart)
+  std::filesystem::path shared_folder_;  // or ""
+  std::optional<CsvResume> resume_;      // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <system_error>
 
 #include "core/error.hpp"
 #include "coupling/flow_engines.hpp"
@@ -17,6 +18,16 @@ std::string step_prefix(long k) {
 
 }  // namespace
 
+std::filesystem::path shared_fields_folder(const std::filesystem::path& flow_file) {
+  return flow_file.string() + ".fields";
+}
+
+void remove_shared_flow(const std::filesystem::path& flow_file) {
+  std::error_code ignored;
+  std::filesystem::remove(flow_file, ignored);
+  std::filesystem::remove_all(shared_fields_folder(flow_file), ignored);
+}
+
 bool flow_can_be_shared(const Case& run_case) {
   return run_case.time.mode == CouplingMode::one_way || run_case.time.mode == CouplingMode::frozen;
 }
@@ -29,9 +40,18 @@ void record_shared_flow(const Case& run_case, const Mesh& mesh, const std::strin
   if (!flow_can_be_shared(run_case))
     throw_run_error("a two-way run's flow depends on its bodies and cannot be shared");
   const TimeConfig& time = run_case.time;
+  const std::filesystem::path fields = shared_fields_folder(path);
+  std::error_code error;
+  std::filesystem::remove_all(fields, error);  // files shared by an earlier recording
   std::unique_ptr<FlowEngine> flow = make_flow_engine(mesh, run_case);
   flow->initialize();
   ArchiveWriter w(path);
+  auto finish = [&] {  // the folder of shared files, once the flow is recorded
+    w.close();
+    std::filesystem::create_directories(fields, error);
+    if (error)
+      throw_run_error("cannot create the folder '{}': {}", fields.string(), error.message());
+  };
   w.write_value("shared.mode", static_cast<int>(time.mode));
   w.write_value("shared.step", time.step);
   w.write_value("shared.end", time.end);
@@ -39,7 +59,7 @@ void record_shared_flow(const Case& run_case, const Mesh& mesh, const std::strin
   if (time.mode == CouplingMode::frozen) {
     flow->settle(time);
     flow->save(w, "settled");
-    w.close();
+    finish();
     return;
   }
   const double eps = 1e-9 * time.step;  // [s]
@@ -57,7 +77,7 @@ void record_shared_flow(const Case& run_case, const Mesh& mesh, const std::strin
     flow->save(w, step_prefix(k));
     output_if_due();
   }
-  w.close();
+  finish();
 }
 
 SharedFlowReplay::SharedFlowReplay(const std::string& path, const Case& run_case, bool with_output)

@@ -9,6 +9,11 @@
 // "shared.end" [s] (the case's time.step and time.end), "shared.output" (1: recorded as a run
 // that writes output does its steps), then in frozen mode the settled state "settled.*", in
 // one-way mode the state after each step k, "k.*", the steps as Simulation takes them.
+//
+// Beside the file, the folder <file>.fields (shared_fields_folder) keeps what every run replaying
+// the flow writes the same: its flow fields at each output time, written by the first run to get
+// there and hard-linked into the folders of the others (RunOutput::share_flow_fields).
+#include <filesystem>
 #include <string>
 
 #include "flow/flow_engine.hpp"
@@ -26,8 +31,15 @@ bool flow_can_be_shared(const Case& run_case);
 /// lets the engine drop what a restarted run would not have at each output time
 /// (FlowEngine::after_checkpoint); `with_output` does the same, so that the recorded flow is
 /// the flow of such runs bit for bit.
+/// The folder of shared files beside it is made afresh (emptied when it was there).
 void record_shared_flow(const Case& run_case, const Mesh& mesh, const std::string& path,
                         bool with_output);
+
+/// The folder of the files every run replaying the shared flow at `flow_file` writes the same.
+std::filesystem::path shared_fields_folder(const std::filesystem::path& flow_file);
+
+/// Removes a shared flow's file and its folder of shared files (the runs keep their links).
+void remove_shared_flow(const std::filesystem::path& flow_file);
 
 /// A run's flow read from a shared flow's file: the file must have been recorded for the run's
 /// mode, step and end time (a RunError naming the file otherwise).
@@ -38,6 +50,7 @@ class SharedFlowReplay {
   void settle(FlowEngine& flow);
   /// One-way mode: the next step's state, in place of FlowEngine::step; it must end at t1 [s].
   void step(FlowEngine& flow, double t1);
+  const std::string& path() const { return reader_.path(); }
 
  private:
   ArchiveReader reader_;

@@ -25,7 +25,7 @@ void Simulation::initialize() {
   bool output_changed = false;
   const std::filesystem::path checkpoint =
       options_.restart ? restart_checkpoint(output_changed) : "";
-  flow_ = make_flow_engine(mesh_, case_);
+  flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
   flow_->initialize();
   if (!options_.shared_flow.empty()) {
     if (options_.restart || !flow_can_be_shared(case_))
@@ -69,7 +69,7 @@ void Simulation::initialize() {
     jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids);
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
         !jam_geometry_.bridges.empty()) {
-      reference_flow_ = make_flow_engine(mesh_, case_);
+      reference_flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
       reference_flow_->initialize();
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }
@@ -244,9 +244,11 @@ void Simulation::open_output(const std::vector<double>* output_times) {
   output_ = output_times
                 ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
                                               *output_times, has_bodies_, time_)
-                : std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
-                                              options_.overwrite || case_.output.overwrite,
-                                              case_.file, inputs);
+                : std::make_unique<RunOutput>(
+                      output_directory(), case_.name, mesh_, run_layout(),
+                      options_.overwrite || case_.output.overwrite, case_.file, inputs,
+                      shared_flow_ ? shared_fields_folder(shared_flow_->path())
+                                   : std::filesystem::path());
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;

@@ -21,6 +21,7 @@
 #include "contact/contact_world.hpp"
 #include "coupling/backwater.hpp"
 #include "coupling/jam_statistics.hpp"
+#include "coupling/mesh_setup.hpp"
 #include "coupling/run_output.hpp"
 #include "coupling/shared_flow.hpp"
 #include "coupling/stage_timer.hpp"
@@ -42,6 +43,9 @@ struct RunOptions {
   /// One-way and frozen runs: the flow read from this file (record_shared_flow of the same
   /// case's flow, coupling/shared_flow.hpp) instead of computed; "": computed.
   std::filesystem::path shared_flow = {};
+  /// What the run may take ready-made (prepare_mesh_setup on a mesh equal to the run's, which
+  /// outlives it; coupling/mesh_setup.hpp), or nullptr: built by the run.
+  std::shared_ptr<const MeshSetup> mesh_setup = nullptr;
 };
 
 class Simulation {
@@ -106,6 +110,7 @@ class Simulation {
 
   Case case_;
   Mesh mesh_;
+  mutable std::string mesh_checksum_;  // run_settings: computed once
   RunOptions options_;
   bool has_bodies_ = false;
 

@@ -293,6 +293,8 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
   report.ran = static_cast<int>(runs.size());
   MemberSetup setup{&plan.mesh, &plan.geometry, plan.config.blocking,
                     options.jobs > 1 || world.size() > 1 ? 1 : 0};
+  if (!runs.empty())
+    setup.mesh_setup = std::make_shared<const MeshSetup>(prepare_mesh_setup(plan.mesh, plan.base));
   FlowSharing sharing = shared_flow_reason(plan.base, plan.config);
   if (!options.share_flow && sharing.shared)
     sharing = {false, "computed by each member (--no-shared-flow)"};
@@ -329,7 +331,7 @@ EnsembleReport run_ensemble(const EnsembleOptions& options, const RankWorld& wor
     mine.push_back(std::move(r));
   }
   progress.finish();
-  if (!setup.shared_flow.empty()) fs::remove(setup.shared_flow);
+  if (!setup.shared_flow.empty()) remove_shared_flow(setup.shared_flow);
 
   std::string text;
   for (const MemberResult& r : mine) text += serialize_member(r);

@@ -56,8 +56,9 @@ struct MemberResult {
   std::vector<BodyOutcome> bodies;
   double wall_seconds = 0.0;  // [s] the member's run (not in the summary)
   double step_seconds = 0.0;  // [s] of which in its steps (flow, bodies with their contacts,
-                              // reaction, diagnostics); the rest is set-up and output. Not in
-                              // member.txt.
+                              // reaction, diagnostics; not the outputs they write) and in the
+                              // blocking monitor's samples; the rest is set-up and output. Not
+                              // in member.txt.
 };
 
 /// The text form, and back; a malformed text is std::invalid_argument (a half-written file).

@@ -23,16 +23,25 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 /// Steps the member's run to its end, sampling the statistics at the first step past each
-/// multiple of the sample interval, at the start and at the end.
+/// multiple of the sample interval, at the start and at the end. result.step_seconds: the wall
+/// time of the steps (all their stages, without the outputs they write) and of the samples.
 void simulate(Simulation& simulation, BlockingMonitor& monitor, double sample_interval,
               MemberResult& result) {
+  using clock = std::chrono::steady_clock;
+  const auto seconds_since = [](clock::time_point start) {
+    return std::chrono::duration<double>(clock::now() - start).count();
+  };
   simulation.initialize();
+  auto start = clock::now();
   monitor.note_new_bodies(simulation.bodies());
   monitor.sample(simulation.time(), simulation.jam_statistics(), simulation.bodies(),
                  simulation.backwater_rise());
+  result.step_seconds += seconds_since(start);
   const double eps = 1e-9 * simulation.run_case().time.step;  // [s]
   while (!simulation.done()) {
     const double t0 = simulation.time();
+    const double output_before = simulation.timer().seconds(Stage::output);
+    start = clock::now();
     simulation.step();
     monitor.note_new_bodies(simulation.bodies());
     const double t1 = simulation.time();
@@ -40,6 +49,8 @@ void simulate(Simulation& simulation, BlockingMonitor& monitor, double sample_in
         simulation.done())
       monitor.sample(t1, simulation.jam_statistics(), simulation.bodies(),
                      simulation.backwater_rise());
+    result.step_seconds +=
+        seconds_since(start) - (simulation.timer().seconds(Stage::output) - output_before);
   }
   simulation.write_final_output();
   monitor.finish(simulation.jam_statistics(), simulation.bodies(), result);
@@ -62,13 +73,11 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
                              .overwrite = true,
                              .write_output = true,
                              .progress = false,
-                             .shared_flow = setup.shared_flow};
+                             .shared_flow = setup.shared_flow,
+                             .mesh_setup = setup.mesh_setup};
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);
-    // The bodies' time holds their contacts' (resolved inside the bodies' sub-steps).
-    for (const Stage stage : {Stage::flow, Stage::bodies, Stage::reaction, Stage::diagnostics})
-      result.step_seconds += simulation.timer().seconds(stage);
   } catch (const std::exception& e) {
     result = MemberResult{};
     result.inputs = run.inputs;
@@ -84,6 +93,10 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
     result.failed = true;
     result.message = e.what();
   }
+  // The ensemble's count of set-up and output includes member.txt (the file holds the time
+  // before it was written).
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -5,9 +5,11 @@
 // statistics, and member.txt written last. A member that fails (its case refused, its run
 // stopped) returns a result marked failed with the message; it never throws.
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "coupling/jam_statistics.hpp"
+#include "coupling/mesh_setup.hpp"
 #include "ensemble/ensemble_config.hpp"
 #include "ensemble/member_result.hpp"
 #include "mesh/mesh.hpp"
@@ -21,8 +23,8 @@ struct MemberRun {
   std::filesystem::path folder;     // its results: DIR/member_NNNN/
 };
 
-/// What every member shares: the mesh (generated once), its jam geometry, the criterion, and
-/// in one-way and frozen ensembles the flow.
+/// What every member shares: the mesh (generated once) and its set-up, its jam geometry, the
+/// criterion, and in one-way and frozen ensembles the flow.
 struct MemberSetup {
   const Mesh* mesh = nullptr;
   const JamGeometry* geometry = nullptr;
@@ -31,6 +33,8 @@ struct MemberSetup {
   std::filesystem::path shared_flow =
       {};  // the flow every member replays (coupling/shared_flow.hpp);
            // "": each computes its own
+  /// The mesh's set-up, built once for all the members (coupling/mesh_setup.hpp).
+  std::shared_ptr<const MeshSetup> mesh_setup = nullptr;
 };
 
 MemberResult run_member(const MemberRun& run, const MemberSetup& setup);

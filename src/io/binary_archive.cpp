@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "io/checksum.hpp"
+
 namespace flotsam {
 namespace {
 constexpr char magic[17] = "FLOTSAM-ARCHIVE\n";
-constexpr std::uint32_t version = 2;          // 2: checksums and the closing record
 constexpr std::uint32_t longest_name = 1024;  // [bytes] of a record's name
 constexpr const char* end_record = "end";     // closes every archive
 }  // namespace
@@ -31,18 +32,22 @@ std::string file_checksum(const std::string& path, const std::string& what) {
 }
 
 ArchiveWriter::ArchiveWriter(const std::string& path)
-    : path_(path), part_path_(path + ".part"), out_(part_path_, std::ios::binary) {
+    : path_(path),
+      part_path_(path + ".part"),
+      out_(part_path_, std::ios::binary),
+      checksum_(record_checksum_for(archive_version)) {
   if (!out_) {
     abandon();
     throw_input_error("cannot write '{}'", path);
   }
   out_.write(magic, 16);
-  out_.write(reinterpret_cast<const char*>(&version), sizeof version);
+  out_.write(reinterpret_cast<const char*>(&archive_version), sizeof archive_version);
 }
 
 void ArchiveWriter::write_raw(const std::string& name, std::uint32_t element_size,
                               std::uint64_t count, const void* data) {
-  Checksum sum;
+  RecordChecksum& sum = *checksum_;
+  sum.reset();
   auto put = [&](const void* bytes, std::size_t size) {
     sum.add(bytes, size);
     out_.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(size));
@@ -95,16 +100,18 @@ ArchiveReader::ArchiveReader(const std::string& path) : path_(path), in_(path, s
   in_.read(reinterpret_cast<char*>(&file_version), sizeof file_version);
   if (!in_ || error || std::memcmp(head, magic, 16) != 0)
     throw_input_error("'{}' is not a flotsam state file", path);
-  if (file_version != version)
-    throw_input_error("'{}' is a flotsam state file of version {}; this flotsam reads version {}",
-                      path, file_version, version);
+  checksum_ = record_checksum_for(file_version);
+  if (!checksum_)
+    throw_input_error(
+        "'{}' is a flotsam state file of version {}; this flotsam reads versions 2 to {}", path,
+        file_version, archive_version);
 }
 
 std::uint64_t ArchiveReader::next_record(const std::string& name, std::uint32_t element_size) {
-  checksum_ = Checksum();
+  checksum_->reset();
   auto get = [&](void* bytes, std::size_t size) {
     in_.read(static_cast<char*>(bytes), static_cast<std::streamsize>(size));
-    if (in_) checksum_.add(bytes, size);
+    if (in_) checksum_->add(bytes, size);
   };
   std::uint32_t length = 0, size = 0;
   std::uint64_t count = 0;
@@ -135,8 +142,8 @@ void ArchiveReader::read_bytes(void* data, std::uint64_t bytes, const std::strin
   std::uint64_t stored = 0;
   in_.read(reinterpret_cast<char*>(&stored), sizeof stored);
   if (!in_) throw_input_error("'{}' ends inside record '{}': the file is truncated", path_, name);
-  checksum_.add(data, bytes);
-  if (stored != checksum_.value())
+  checksum_->add(data, bytes);
+  if (stored != checksum_->value())
     throw_input_error(
         "'{}': record '{}' is damaged (its checksum does not match its contents): the file was "
         "altered after it was written",

@@ -2,10 +2,14 @@
 // A small self-describing binary file of named arrays, for checkpoints (restart) and the states
 // `flotsam render` draws. Layout (little endian, as the machine writes it):
 //
-//   "FLOTSAM-ARCHIVE\n" (16 bytes), uint32 version,
+//   "FLOTSAM-ARCHIVE\n" (16 bytes), uint32 version (3),
 //   then records: uint32 name length, name bytes, uint32 element size, uint64 count, the values,
-//                 uint64 checksum (FNV-1a, io/checksum.hpp, of the record's bytes before it),
+//                 uint64 checksum (of the record's bytes before it: XXH3-64 in version 3,
+//                 FNV-1a in version 2; io/record_checksum.hpp),
 //   then the record "end" (no values), and nothing after it.
+//
+// Versions: archives are written in version 3; archives of version 2 (the same layout with
+// FNV-1a checksums) are read as well, any other version is refused naming it.
 //
 // Integrity: the reader checks every record's name, element size, length (never more than the
 // bytes left in the file) and checksum, and finish() that the file ends right after "end"; a
@@ -20,6 +24,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -27,9 +32,12 @@
 
 #include "core/error.hpp"
 #include "core/vec.hpp"
-#include "io/checksum.hpp"
+#include "io/record_checksum.hpp"
 
 namespace flotsam {
+
+/// The version archives are written in (the layout above).
+inline constexpr std::uint32_t archive_version = 3;
 
 /// A struct in an archive: specialise with its data members in a fixed order,
 ///   template <> struct archive_fields<Foo> {
@@ -156,6 +164,7 @@ class ArchiveWriter {
   void abandon();  // closes and removes the temporary file
   std::string path_, part_path_;
   std::ofstream out_;
+  std::unique_ptr<RecordChecksum> checksum_;  // of the record being written
   bool closed_ = false;
 };
 
@@ -199,8 +208,8 @@ class ArchiveReader {
   void read_bytes(void* data, std::uint64_t bytes, const std::string& name);
   std::string path_;
   std::ifstream in_;
-  std::uint64_t file_size_ = 0;  // [bytes]
-  Checksum checksum_;            // of the record being read
+  std::uint64_t file_size_ = 0;               // [bytes]
+  std::unique_ptr<RecordChecksum> checksum_;  // of the record being read (the file's version)
 };
 
 }  // namespace flotsam

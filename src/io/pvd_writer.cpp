@@ -6,8 +6,8 @@
 
 namespace flotsam {
 
-PvdWriter::PvdWriter(std::string path) : path_(std::move(path)) {
-  write();
+PvdWriter::PvdWriter(std::string path, Start start) : path_(std::move(path)) {
+  if (start == Start::empty_now) write();
 }
 
 void PvdWriter::add(double time, const std::string& relative_file, int part) {

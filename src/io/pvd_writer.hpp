@@ -8,8 +8,10 @@ namespace flotsam {
 
 class PvdWriter {
  public:
-  /// Writes an empty collection at path at once (replacing any file there).
-  explicit PvdWriter(std::string path);
+  /// When the index is first written: an empty collection at once (replacing any file there),
+  /// or with its first dataset (a run's index: nothing to list before its first output).
+  enum class Start { empty_now, at_first_add };
+  explicit PvdWriter(std::string path, Start start = Start::empty_now);
 
   /// Adds a dataset at time [s]; `relative_file` is relative to the .pvd's folder. Datasets of
   /// the same time with different `part`s (say the flow as part 0, the bodies as part 1) are

@@ -18,8 +18,9 @@
 #include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
+#include "io/binary_archive.hpp"
 #include "io/case_file.hpp"
-#include "io/checksum.hpp"
+#include "io/record_checksum.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
@@ -204,9 +205,9 @@ void patch_record(const fs::path& file, const std::string& name,
     at += 12;
     if (found == name) {
       edit(&bytes[at]);
-      Checksum sum;
-      sum.add(&bytes[start], at + size * count - start);
-      const std::uint64_t check = sum.value();
+      const auto sum = record_checksum_for(archive_version);
+      sum->add(&bytes[start], at + size * count - start);
+      const std::uint64_t check = sum->value();
       std::memcpy(&bytes[at + size * count], &check, 8);
       write_bytes(file, bytes);
       return;

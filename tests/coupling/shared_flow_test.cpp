@@ -1,12 +1,16 @@
 // Verifies the shared flow (coupling/shared_flow.hpp): a one-way or frozen run that replays a
 // flow recorded once ends in the same state, bit for bit, as the run that computes its own flow
 // (bodies with contacts and a seeded release, the flow, the water balance, the tables written),
-// with either engine; and a shared flow recorded for other times is refused.
+// with either engine; runs replaying it write each flow field file once and link it, the same
+// bytes as the run that computes its own flow writes; and a shared flow recorded for other times
+// is refused.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "../support/scratch_path.hpp"
 #include "../support/straight_channel.hpp"
@@ -47,6 +51,24 @@ struct SharedFlowCase {
   const char* name;
 };
 
+/// The flow fields of two runs replaying one shared flow: the first wrote each output's file and
+/// shared it, the second linked it (one file, two names, the shared one removed since); both
+/// are the bytes the run computing its own flow wrote.
+void expect_flow_fields_linked(const fs::path& own, const fs::path& first, const fs::path& second) {
+  const std::vector<std::string> files = {"flow_000000.vtu", "flow_000001.vtu", "flow_000002.vtu",
+                                          "flow_000003.vtu"};  // outputs at 0, 4, 8, 10 s
+  for (const std::string& file : files) {
+    const std::string written = text_of(own / file);
+    ASSERT_GT(written.size(), 1000u) << file;
+    EXPECT_EQ(text_of(first / file), written) << file;
+    EXPECT_EQ(text_of(second / file), written) << file;
+    EXPECT_TRUE(fs::equivalent(first / file, second / file)) << file;
+    EXPECT_EQ(fs::hard_link_count(second / file), 2u) << file;
+    EXPECT_EQ(fs::hard_link_count(own / file), 1u) << file;
+  }
+  EXPECT_FALSE(fs::exists(own / "flow_000004.vtu"));
+}
+
 class SharedFlow : public testing::TestWithParam<SharedFlowCase> {};
 
 TEST_P(SharedFlow, ReplayedFlowMovesTheBodiesAsTheComputedFlowBitForBit) {
@@ -67,6 +89,15 @@ TEST_P(SharedFlow, ReplayedFlowMovesTheBodiesAsTheComputedFlowBitForBit) {
                      .progress = false,
                      .shared_flow = base / "flow.bin"});
   replay.run();
+  Simulation(run_case, mesh,
+             {.output_directory = base / "second",
+              .write_output = true,
+              .progress = false,
+              .shared_flow = base / "flow.bin"})
+      .run();
+  remove_shared_flow(base / "flow.bin");
+  EXPECT_FALSE(fs::exists(base / "flow.bin"));
+  EXPECT_FALSE(fs::exists(shared_fields_folder(base / "flow.bin")));
 
   ASSERT_EQ(own.bodies().size(), replay.bodies().size());
   ASSERT_GE(own.bodies().size(), 6);  // three placed, at least three released
@@ -81,6 +112,7 @@ TEST_P(SharedFlow, ReplayedFlowMovesTheBodiesAsTheComputedFlowBitForBit) {
   // What the runs wrote: the body tracks and the checkpoint (a restart continues either).
   for (const char* file : {"shared_bodies.csv", "checkpoint.bin"})
     EXPECT_EQ(text_of(base / "own" / file), text_of(base / "replay" / file)) << file;
+  expect_flow_fields_linked(base / "own", base / "replay", base / "second");
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -14,8 +14,12 @@
 
 namespace flotsam {
 
-FvEngine::FvEngine(const Mesh& mesh, const Case& flow_case)
-    : mesh_(mesh), case_(flow_case), solver_(mesh, flow_case) {}
+FvEngine::FvEngine(const Mesh& mesh, const Case& flow_case, std::shared_ptr<const CellMesh> cells,
+                   std::shared_ptr<const PointLocator> locator)
+    : mesh_(mesh),
+      case_(flow_case),
+      solver_(mesh, flow_case, std::move(cells)),
+      locator_(std::move(locator)) {}
 
 void FvEngine::initialize() {
   solver_.initialize();
@@ -26,7 +30,7 @@ void FvEngine::initialize() {
     const ConservedState& U = solver_.state();
     envelope_.update(U.h, U.hu, U.hv, t, dt, case_.flow.fv.velocity_depth);
   });
-  field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed());
+  field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed(), locator_);
   field_->reset_to_state();
   nodal_valid_ = false;
 }

@@ -14,8 +14,11 @@ namespace flotsam {
 
 class FvEngine final : public FlowEngine {
  public:
-  /// Keeps references to `mesh` and `flow_case`, which must outlive the engine.
-  FvEngine(const Mesh& mesh, const Case& flow_case);
+  /// Keeps references to `mesh` and `flow_case`, which must outlive the engine. `cells` and
+  /// `locator`: built once on the same mesh and shared by several runs (an ensemble's members,
+  /// coupling/mesh_setup.hpp), or nullptr: the engine builds its own.
+  FvEngine(const Mesh& mesh, const Case& flow_case, std::shared_ptr<const CellMesh> cells = nullptr,
+           std::shared_ptr<const PointLocator> locator = nullptr);
 
   void initialize() override;
   void step(double dt) override;
@@ -47,6 +50,7 @@ class FvEngine final : public FlowEngine {
   const Mesh& mesh_;
   const Case& case_;
   FiniteVolumeSolver solver_;
+  std::shared_ptr<const PointLocator> locator_;  // for the field, or nullptr
   std::unique_ptr<FvFlowField> field_;
   FloodEnvelope envelope_;                 // per cell, updated after every sub-step
   mutable std::vector<int> raster_cells_;  // the cell under each pixel of the envelopes' rasters

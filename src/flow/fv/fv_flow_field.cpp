@@ -9,8 +9,12 @@
 
 namespace flotsam {
 
-FvFlowField::FvFlowField(FiniteVolumeSolver& solver, const Mesh& mesh, std::vector<double> node_bed)
-    : solver_(solver), mesh_(mesh), locator_(mesh), node_bed_(std::move(node_bed)) {
+FvFlowField::FvFlowField(FiniteVolumeSolver& solver, const Mesh& mesh, std::vector<double> node_bed,
+                         std::shared_ptr<const PointLocator> locator)
+    : solver_(solver),
+      mesh_(mesh),
+      locator_(locator ? std::move(locator) : std::make_shared<const PointLocator>(mesh)),
+      node_bed_(std::move(node_bed)) {
   const CellMesh& c = solver_.cells();
   bed_slope_.resize(c.cell_count);
   for (int i = 0; i < c.cell_count; ++i) {  // the plane through the corners: J^-T (dz1, dz2)
@@ -37,13 +41,13 @@ void FvFlowField::reset_to_state() {
 }
 
 int FvFlowField::cell_of(const Vec2& p, int& hint) const {
-  const Location where = locator_.locate(p, hint);
+  const Location where = locator_->locate(p, hint);
   if (where.element >= 0) hint = where.element;
   return where.inside ? solver_.cells().cell_of(where.element, where.r, where.s) : -1;
 }
 
 int FvFlowField::cell_at(const Vec2& p, int& hint, FlowSample& out) const {
-  const Location where = locator_.locate(p, hint);
+  const Location where = locator_->locate(p, hint);
   if (where.element >= 0) hint = where.element;
   if (!where.inside) {
     out.inside = false;

@@ -9,6 +9,7 @@
 // centroid lies in its footprint, in proportion to their area (the wet cell holding its centre
 // when none does), so the water receives exactly -F_x; a body over dry cells gives nothing to
 // the water (it rests on the bed).
+#include <memory>
 #include <vector>
 
 #include "flow/flow_field.hpp"
@@ -20,8 +21,10 @@ namespace flotsam {
 class FvFlowField final : public FlowField {
  public:
   /// Keeps references to `solver` and `mesh`, which must outlive the field; `node_bed` [m] is
-  /// the bed at every mesh node.
-  FvFlowField(FiniteVolumeSolver& solver, const Mesh& mesh, std::vector<double> node_bed);
+  /// the bed at every mesh node. `locator`: a point locator of the same mesh shared by several
+  /// runs (its mesh must outlive the field), or nullptr: the field builds its own.
+  FvFlowField(FiniteVolumeSolver& solver, const Mesh& mesh, std::vector<double> node_bed,
+              std::shared_ptr<const PointLocator> locator = nullptr);
 
   /// The state now becomes the end of the current step, the previous end its beginning.
   void advance_to_state();
@@ -42,7 +45,7 @@ class FvFlowField final : public FlowField {
 
   FiniteVolumeSolver& solver_;
   const Mesh& mesh_;
-  PointLocator locator_;
+  std::shared_ptr<const PointLocator> locator_;
   std::vector<double> node_bed_;  // [m] per mesh node
   std::vector<Vec2> bed_slope_;   // [-] grad z_b per cell
   CellField begin_, end_;

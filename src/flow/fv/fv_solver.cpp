@@ -35,10 +35,14 @@ inline FaceState face_value(const CellField& f, int i, int k) {
 
 }  // namespace
 
-FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case)
+FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
+                                       std::shared_ptr<const CellMesh> cells)
     : mesh_(mesh),
       case_(flow_case),
-      cells_(build_cell_mesh(mesh, flow_case.flow.fv.cells)),
+      shared_cells_(
+          cells ? std::move(cells)
+                : std::make_shared<const CellMesh>(build_cell_mesh(mesh, flow_case.flow.fv.cells))),
+      cells_(*shared_cells_),
       boundaries_(FvBoundaries::resolve(mesh, flow_case.flow)),
       friction_(FrictionModel::from(flow_case.flow)),
       rain_(flow_case.flow.rain, cells_) {

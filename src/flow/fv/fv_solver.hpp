@@ -13,6 +13,7 @@
 // R = (w_i int r dt, 0, 0) the rain of the sub-step and infiltration its loss (rain_source.hpp,
 // (M-17)).
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -44,9 +45,11 @@ struct SubStepStats {
 
 class FiniteVolumeSolver {
  public:
-  /// Keeps references to `mesh` and `flow_case`. Builds the cells and resolves the boundary
-  /// conditions (InputError naming a group the engine cannot take).
-  FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case);
+  /// Keeps references to `mesh` and `flow_case`. Builds the cells (or takes `cells`, built by
+  /// build_cell_mesh on the same mesh with the case's flow.fv.cells, shared by several runs)
+  /// and resolves the boundary conditions (InputError naming a group the engine cannot take).
+  FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
+                     std::shared_ptr<const CellMesh> cells = nullptr);
 
   /// Bed per cell and the case's initial state at t = 0; starts the water balance.
   void initialize();
@@ -109,7 +112,8 @@ class FiniteVolumeSolver {
 
   const Mesh& mesh_;
   const Case& case_;
-  CellMesh cells_;
+  std::shared_ptr<const CellMesh> shared_cells_;  // owns cells_
+  const CellMesh& cells_;
   FvBoundaries boundaries_;
   FrictionModel friction_;
   std::vector<double> friction_coefficient_;  // n, C or K per cell (the law's unit)
