@@ -12,8 +12,11 @@
 //   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
 //
 // M_L is the lumped P2 mass (diagonal scaling, Hinton-Rock-Zienkiewicz: the consistent diagonal
-// scaled to the element's area; row sums would give the P2 vertices zero mass), G_ai =
-// (N_a, grad M_i) the surface slope (3) / continuity flux (9) operator, K_nu the scalar
+// scaled to the element's area; row sums would give the P2 vertices zero mass), G the surface
+// slope (3) and, transposed, the continuity flux (9), both integrated with M_L's own nodal
+// quadrature: G_ai = sum over the elements e at node a of m_a^e / |e| integral_e grad M_i, so
+// that M_L^-1 G eta is at every node the mean of its elements' slopes (the exact (N_a, grad M_i)
+// is zero at P2 vertices: their shape functions integrate to zero), K_nu the scalar
 // viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
 // P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
 // velocity nodes), M_1 the P1 mass. The elevation system is solved by conjugate gradients
@@ -21,6 +24,8 @@
 // refactorisation), refactorised when the iterations exceed max_reused_iterations.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
+#include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -60,17 +65,22 @@ class SegregatedStep {
   void assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads);
   void predict_velocity(const ShallowWaterSolver& s, const Prediction& in, std::vector<double>& u,
                         std::vector<double>& v);
-  Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b);
+  using Operator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+  /// (M-22): x with apply(x) = b, preconditioned by the Cholesky factor of the SPD part S.
+  Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
+                                  const Operator& apply);
 
   const Mesh& mesh_;
-  std::vector<double> m_;        // [m^2] lumped P2 mass per node
-  SparseMatrix G_;               // (2 N2) x N1, rows 2a + c: (N_a, d M_i / d x_c) [m]
-  SparseMatrix M1_;              // P1 mass [m^2]
+  std::vector<double> m_;  // [m^2] lumped P2 mass per node
+  SparseMatrix G_;         // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
+  std::vector<std::array<int, 2>> mid_ends_;  // the two vertices of each mid node (index - N1)
+  SparseMatrix M1_;                           // P1 mass [m^2]
   SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
   std::vector<int> k_position_;  // per element 36 positions in K_'s values
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
-  int factor_age_ = -1;  // steps since the factorisation; -1: none
+  int factor_age_ = -1;       // steps since the factorisation; -1: none
+  int fresh_iterations_ = 0;  // GMRES iterations of the solve that followed the factorisation
   long elevation_iterations_ = 0, factorisations_ = 0;
 };
 
