@@ -141,7 +141,7 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
       counts.refinement_failures);
   if (const SegregatedStep* segregated = solver.segregated_step())
     std::printf(
-        "segregated: %ld CG iterations of the elevation system, %ld Cholesky factorisations\n",
+        "segregated: %ld GMRES iterations of the elevation system, %ld Cholesky factorisations\n",
         segregated->elevation_iterations(), segregated->factorisations());
 }
 

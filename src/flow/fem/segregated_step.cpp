@@ -1,3 +1,5 @@
+// Eigen's CHOLMOD view of a sparse matrix: GCC sees a null outer index where there is none.
+#pragma GCC diagnostic ignored "-Wnull-dereference"
 #include "flow/fem/segregated_step.hpp"
 
 #include <algorithm>
@@ -167,6 +169,7 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
   G_.setFromTriplets(g.begin(), g.end());
   M1_.resize(N1, N1);
   M1_.setFromTriplets(m1.begin(), m1.end());
+  plan_schur_matrix();
   K_.resize(N2, N2);
   K_.setFromTriplets(k.begin(), k.end());
   K_.makeCompressed();
@@ -181,6 +184,51 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
             static_cast<int>(std::lower_bound(begin, end, el[a]) - K_.innerIndexPtr());
       }
   }
+}
+
+// The pattern of S = M_1 + G^T D G (D: 2x2 blocks per P2 node) and, per node a, where each
+// product of its rows of G lands in S's values, so that (M-22) is assembled in place each step.
+void SegregatedStep::plan_schur_matrix() {
+  const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count;
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  const RowMatrix rows = G_;  // rows 2a and 2a + 1 share their columns
+  std::vector<Eigen::Triplet<double>> pattern;
+  for (int k = 0; k < M1_.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator entry(M1_, k); entry; ++entry)
+      pattern.emplace_back(static_cast<int>(entry.row()), k, 0.0);
+  schur_node_start_.assign(N2 + 1, 0);
+  schur_vertex_.clear();
+  schur_slope_.clear();
+  for (int a = 0; a < N2; ++a) {
+    for (RowMatrix::InnerIterator x(rows, 2 * a), y(rows, 2 * a + 1); x; ++x, ++y) {
+      schur_vertex_.push_back(static_cast<int>(x.col()));
+      schur_slope_.emplace_back(x.value(), y.value());
+    }
+    schur_node_start_[a + 1] = static_cast<int>(schur_vertex_.size());
+    for (int p = schur_node_start_[a]; p < schur_node_start_[a + 1]; ++p)
+      for (int q = schur_node_start_[a]; q < schur_node_start_[a + 1]; ++q)
+        pattern.emplace_back(schur_vertex_[p], schur_vertex_[q], 0.0);
+  }
+  S_.resize(N1, N1);
+  S_.setFromTriplets(pattern.begin(), pattern.end());
+  S_.makeCompressed();
+  const auto position = [&](int i, int j) {
+    const int* begin = S_.innerIndexPtr() + S_.outerIndexPtr()[j];
+    const int* end = S_.innerIndexPtr() + S_.outerIndexPtr()[j + 1];
+    return static_cast<int>(std::lower_bound(begin, end, i) - S_.innerIndexPtr());
+  };
+  schur_position_.clear();
+  for (int a = 0; a < N2; ++a)
+    for (int p = schur_node_start_[a]; p < schur_node_start_[a + 1]; ++p)
+      for (int q = schur_node_start_[a]; q < schur_node_start_[a + 1]; ++q)
+        schur_position_.push_back(position(schur_vertex_[p], schur_vertex_[q]));
+  m1_position_.clear();
+  m1_value_.clear();
+  for (int k = 0; k < M1_.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator entry(M1_, k); entry; ++entry) {
+      m1_position_.push_back(position(static_cast<int>(entry.row()), k));
+      m1_value_.push_back(entry.value());
+    }
 }
 
 SegregatedStep::~SegregatedStep() = default;
@@ -405,8 +453,6 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
         P_after[slip.node] = tangent;
     }
     std::vector<double> H(N2);
-    std::vector<Eigen::Triplet<double>> d;
-    d.reserve(4 * static_cast<size_t>(N2));
     Vector flux(2 * N2);  // [m^2/s] H (theta P u~ + (1 - theta) u^n), by node
     for (int a = 0; a < N2; ++a) {
       H[a] = s.node_depth_of(n, a);
@@ -418,17 +464,24 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
       const Vec2 q = H[a] * (th * u_tilde + (1.0 - th) * Vec2(n.u[a], n.v[a]));  // (9)
       flux[2 * a] = q.x();
       flux[2 * a + 1] = q.y();
-      for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) d.emplace_back(2 * a + i, 2 * a + j, H[a] / A[a] * P[a](i, j));
     }
 
-    // 3. Elevation (M-22): the Schur complement, SPD.
-    SparseMatrix D(2 * N2, 2 * N2);
-    D.setFromTriplets(d.begin(), d.end());
-    const SparseMatrix DG = D * G_;
-    SparseMatrix S = G_.transpose() * DG;
-    S *= th * th * g;
-    S += M1_ * (1.0 / dt);                            // (8)
+    // 3. Elevation (M-22): the Schur complement M_1/dt + theta^2 g G^T D G, SPD, assembled in
+    // place: node a adds (G_a,i)^T D_a (G_a,j) for each pair of vertices i, j in its rows of G.
+    double* S_values = S_.valuePtr();
+    std::fill(S_values, S_values + S_.nonZeros(), 0.0);
+    for (size_t k = 0; k < m1_position_.size(); ++k)
+      S_values[m1_position_[k]] = m1_value_[k] / dt;  // (8)
+    const int* position = schur_position_.data();
+    for (int a = 0; a < N2; ++a) {
+      const Mat2 D_a = th * th * g * H[a] / A[a] * P[a];  // [1/s]
+      const int begin = schur_node_start_[a], end = schur_node_start_[a + 1];
+      for (int p = begin; p < end; ++p) {
+        const Vec2 w = D_a * schur_slope_[p];
+        for (int q = begin; q < end; ++q) S_values[*position++] += w.dot(schur_slope_[q]);
+      }
+    }
+    const SparseMatrix& S = S_;
     Vector b = loads.source + G_.transpose() * flux;  // (11) (9)
     std::vector<double> open_flux(mesh_.group_names.size(), 0.0);
     EdgeValues ev;

@@ -67,6 +67,7 @@ class SegregatedStep {
                         std::vector<double>& v);
   using Operator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
   /// (M-22): x with apply(x) = b, preconditioned by the Cholesky factor of the SPD part S.
+  void plan_schur_matrix();
   Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
                                   const Operator& apply);
 
@@ -75,6 +76,13 @@ class SegregatedStep {
   SparseMatrix G_;         // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
   std::vector<std::array<int, 2>> mid_ends_;  // the two vertices of each mid node (index - N1)
   SparseMatrix M1_;                           // P1 mass [m^2]
+  SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
+  std::vector<int> schur_node_start_;  // per P2 node, its range in schur_vertex_/schur_slope_
+  std::vector<int> schur_vertex_;      // the vertices i of node a's rows of G
+  std::vector<Vec2> schur_slope_;      // (G_2a,i, G_2a+1,i) [m]
+  std::vector<int> schur_position_;    // per node, per pair (i, j) of its vertices: S_'s value
+  std::vector<int> m1_position_;       // M_1's entries in S_'s values
+  std::vector<double> m1_value_;       // [m^2]
   SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
   std::vector<int> k_position_;  // per element 36 positions in K_'s values
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
