@@ -128,6 +128,7 @@ struct SegregatedStep::Loads {
 SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.mesh()) {
   const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count, E = mesh_.element_count();
   m_.assign(N2, 0.0);
+  k_geometry_.assign(21 * static_cast<size_t>(E), 0.0);
   std::vector<Eigen::Triplet<double>> g, m1, k;
   g.reserve(36 * static_cast<size_t>(E));
   m1.reserve(9 * static_cast<size_t>(E));
@@ -143,6 +144,9 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
     for (int q = 0; q < triangle_point_count; ++q) {
       area += ev.JxW[q];
       for (int a = 0; a < 6; ++a) diagonal[a] += ev.N2[q][a] * ev.N2[q][a] * ev.JxW[q];
+      for (int a = 0, ab = 21 * e; a < 6; ++a)  // (grad N_a, grad N_b), b >= a
+        for (int b = a; b < 6; ++b, ++ab)
+          k_geometry_[ab] += ev.dN2[q][a].dot(ev.dN2[q][b]) * ev.JxW[q];
       for (int i = 0; i < 3; ++i) {
         slope[i] += ev.dN1[q][i] * ev.JxW[q];
         for (int j = 0; j < 3; ++j)
@@ -309,12 +313,15 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
         const Vec2& dN_a = ev.dN2[q][a];
         // (4), transposed half (nu_e grad u^T, grad w) at t^n
         loads.force[el[a]] -= nu_e * G_n.transpose() * dN_a * JxW;
-        for (int b = 0; b < 6; ++b)
-          K_.valuePtr()[k_position_[36 * e + 6 * a + b]] +=
-              nu_e * dN_a.dot(ev.dN2[q][b]) * JxW;  // (4), (nu_e grad u, grad w)
       }
       for (int i = 0; i < 3; ++i) loads.source[el[i]] += ev.N1[q][i] * S * JxW;  // (11)
     }
+    for (int a = 0, ab = 21 * e; a < 6; ++a)  // (4), (nu_e grad u, grad w)
+      for (int b = a; b < 6; ++b, ++ab) {
+        const double k = nu_e * k_geometry_[ab];
+        K_.valuePtr()[k_position_[36 * e + 6 * a + b]] += k;
+        if (b != a) K_.valuePtr()[k_position_[36 * e + 6 * b + a]] += k;
+      }
     // (7) in M_L's nodal quadrature, as the slope (3) is (G): each node takes its share of the
     // element's force, so that a forced state at rest (wind set-up) balances node by node.
     for (int a = 0; a < 6; ++a) loads.force[el[a]] += diagonal[a] / diagonal_sum * total_force;

@@ -85,6 +85,7 @@ class SegregatedStep {
   std::vector<double> m1_value_;       // [m^2]
   SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
   std::vector<int> k_position_;  // per element 36 positions in K_'s values
+  std::vector<double> k_geometry_;  // per element (grad N_a, grad N_b), b >= a: 21 [-]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none
