@@ -364,6 +364,7 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
     if (iterations > max_cg_iterations)
       throw_run_error("flow: the momentum predictor (M-21) did not converge in {} iterations",
                       max_cg_iterations);
+    momentum_iterations_ += iterations;
     for (int a = 0; a < N2; ++a) w[a] = x[a];
   }
 }

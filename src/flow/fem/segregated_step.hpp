@@ -7,8 +7,10 @@
 //   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-(1-theta) g G eta^n) - f k x u^n  (M-20)
 //   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - theta g G eta^n
 //                    - (1-theta) K_nu u^n - T_nu(u^n) + F                     (M-21) per component
-//   3. elevation   (M_1/dt + theta^2 g G^T D G) d_eta = S - B + G^T H (theta u~ + (1-theta) u^n)
-//                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a)        (M-22), SPD
+//   3. elevation   (M_1/dt + theta^2 g G^T D G - C) d_eta = S - B + G^T H (theta u~ + (1-theta)
+//   u^n)
+//                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a),  C x = G^T (theta u^n_a x_a)
+//                    (M-22): SPD but for C, the depth's change carried by the current
 //   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
 //
 // M_L is the lumped P2 mass (diagonal scaling, Hinton-Rock-Zienkiewicz: the consistent diagonal
@@ -19,9 +21,10 @@
 // is zero at P2 vertices: their shape functions integrate to zero), K_nu the scalar
 // viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
 // P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
-// velocity nodes), M_1 the P1 mass. The elevation system is solved by conjugate gradients
-// preconditioned with a CHOLMOD Cholesky factor of an earlier step's matrix (exact after a
-// refactorisation), refactorised when the iterations exceed max_reused_iterations.
+// velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing (7) is integrated
+// in M_L's quadrature too. The elevation system is solved by GMRES preconditioned with a CHOLMOD
+// Cholesky factor of an earlier step's SPD part, refactorised when GMRES needs more than
+// max_extra_iterations beyond what it needed after the last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
@@ -52,6 +55,8 @@ class SegregatedStep {
   /// Conjugate-gradient iterations of the elevation solves so far, and factorisations.
   long elevation_iterations() const { return elevation_iterations_; }
   long factorisations() const { return factorisations_; }
+  /// Conjugate-gradient iterations of the momentum predictor (M-21) so far, both components.
+  long momentum_iterations() const { return momentum_iterations_; }
 
  private:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -90,7 +95,7 @@ class SegregatedStep {
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none
   int fresh_iterations_ = 0;  // GMRES iterations of the solve that followed the factorisation
-  long elevation_iterations_ = 0, factorisations_ = 0;
+  long elevation_iterations_ = 0, factorisations_ = 0, momentum_iterations_ = 0;
 };
 
 }  // namespace flotsam
