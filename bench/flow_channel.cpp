@@ -55,6 +55,17 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// CPU time of the process so far [s] (user + system): with one thread, the wall time an idle
+// machine would show, which a loaded one does not.
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 double peak_memory_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -141,8 +152,10 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
       counts.refinement_failures);
   if (const SegregatedStep* segregated = solver.segregated_step())
     std::printf(
-        "segregated: %ld CG iterations of the elevation system, %ld Cholesky factorisations\n",
-        segregated->elevation_iterations(), segregated->factorisations());
+        "segregated: %ld GMRES iterations of the elevation system, %ld Cholesky factorisations, "
+        "%ld CG iterations of the momentum predictor (u and v)\n",
+        segregated->elevation_iterations(), segregated->factorisations(),
+        segregated->momentum_iterations());
 }
 
 int run_steady(double mesh_size, double viscosity) {
@@ -200,6 +213,7 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
   set_reuse_from_environment(options);
   ShallowWaterSolver solver(mesh, c, options);
   const auto start = Clock::now();
+  const double cpu_start = cpu_seconds();
   solver.initialize();
   const int steps = static_cast<int>(std::lround(t_end / dt));
   long iterations = 0;
@@ -222,12 +236,13 @@ int run_unsteady(double dt, double t_end, double mesh_size, const std::string& s
         mean.u[i] += dt * std::hypot(solver.u()[i], solver.v()[i]);
     }
   }
-  const double wall = seconds_since(start);
+  const double wall = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   std::printf(
-      "unsteady: %s, %d elements, %d threads, dt %g s, %d steps to t = %g s: %.2f s wall, %.2f "
-      "ms per step, %.2f Newton iterations per step, balance %.2e, peak memory %.1f MiB\n",
+      "unsteady: %s, %d elements, %d threads, dt %g s, %d steps to t = %g s: %.2f s wall (%.2f s "
+      "CPU), %.2f ms per step, %.2f Newton iterations per step, balance %.2e, peak memory %.1f "
+      "MiB\n",
       c.flow.scheme == FlowScheme::segregated ? "segregated" : "coupled", mesh.element_count(),
-      omp_get_max_threads(), dt, steps, solver.time(), wall, 1e3 * wall / steps,
+      omp_get_max_threads(), dt, steps, solver.time(), wall, cpu, 1e3 * wall / steps,
       static_cast<double>(iterations) / steps, solver.water_balance().relative_error(),
       peak_memory_mib());
   std::printf(
@@ -301,16 +316,17 @@ int run_scaling(double mesh_size, int steps, double dt) {
   const double setup_wall = seconds_since(setup_start);
   solver.step(dt);  // the first step holds the symbolic analysis
   const auto start = Clock::now();
+  const double cpu_start = cpu_seconds();
   long iterations = 0;
   for (int n = 0; n < steps; ++n) iterations += solver.step(dt).iterations;
-  const double wall = seconds_since(start);
+  const double wall = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   std::printf(
       "scaling: %s, mesh_size %g m, %d elements, %d unknowns, %d threads: mesh %.2f s, setup "
-      "%.2f s, %.1f ms per step (%.2f iterations per step), peak memory %.1f MiB\n",
+      "%.2f s, %.1f ms per step (%.1f ms CPU; %.2f iterations per step), peak memory %.1f MiB\n",
       c.flow.scheme == FlowScheme::segregated ? "segregated" : "coupled", mesh_size,
       mesh.element_count(), 2 * mesh.node_count() + mesh.vertex_count, omp_get_max_threads(),
-      mesh_wall, setup_wall, 1e3 * wall / steps, static_cast<double>(iterations) / steps,
-      peak_memory_mib());
+      mesh_wall, setup_wall, 1e3 * wall / steps, 1e3 * cpu / steps,
+      static_cast<double>(iterations) / steps, peak_memory_mib());
   print_linear_solver_counts(solver);
   return 0;
 }

@@ -96,8 +96,9 @@ struct FrictionMapConfig {
 };
 
 /// How the FEM engine advances a step (docs/model.md "FEM engine"): one coupled (u, eta) system
-/// per step, or the segregated (projection) step: momentum with a lumped P2 mass, then one SPD P1
-/// system for the elevation (src/flow/fem/segregated_step.hpp).
+/// per step, or the segregated (projection) step: momentum with a lumped P2 mass, then one P1
+/// system for the elevation, its SPD Schur complement plus the depth carried by the current,
+/// preconditioned by the former's Cholesky factor (src/flow/fem/segregated_step.hpp).
 enum class FlowScheme { coupled, segregated };
 
 struct FlowConfig {

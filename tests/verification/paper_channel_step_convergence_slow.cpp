@@ -9,8 +9,9 @@
 //   - the mean surface at four gauges one pier diameter upstream of the bridge (x = 250 m; y =
 //     10, 42.5, 85, 127.5 m: bank gap, pier axis, middle gap, pier axis) within 2 % of the 0.1 m
 //     fall over the reach (2 mm; 2 % of the depth, 20 cm, would be the whole fall).
-// The default step (flow.scheme: coupled); the segregated step dries a node behind the bridge
-// at dt = 0.1 s on this case (docs/validation.md).
+// Both steps (flow.scheme), each against its own dt = 0.1 s run. DISABLED for the segregated
+// step, which misses it (2026-11-24: Q -1.91 %, two gauges 2.2 % and 2.4 % of the fall; run it
+// with --gtest_also_run_disabled_tests).
 // docs/validation.md "Step convergence on the paper's channel" has the figures.
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <string>
 
+#include "../support/flow_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "io/case_file.hpp"
 #include "mesh/interpolation.hpp"
@@ -73,14 +75,18 @@ Means run(const Case& c, const Mesh& mesh, double dt) {
   return m;
 }
 
-TEST(PaperChannelStep, ExamplesStepWithinTwoPercentOfTheReference) {
-  const Case c = shortened_channel();
+class PaperChannelStep : public testing::TestWithParam<FlowScheme> {};
+
+TEST_P(PaperChannelStep, ExamplesStepWithinTwoPercentOfTheReference) {
+  Case c = shortened_channel();
+  c.flow.scheme = GetParam();
   const Mesh mesh = generate_mesh(c.mesh);
   const double step = c.time.step;  // [s] the examples' step
   const Means coarse = run(c, mesh, step), fine = run(c, mesh, reference_step);
   const double dQ = coarse.discharge / fine.discharge - 1.0;
-  std::printf("%d elements: Q(dt = %g s) = %.1f, Q(dt = 0.1 s) = %.1f m^3/s: %+.2f %%\n",
-              mesh.element_count(), step, coarse.discharge, fine.discharge, 100 * dQ);
+  std::printf("%s, %d elements: Q(dt = %g s) = %.1f, Q(dt = 0.1 s) = %.1f m^3/s: %+.2f %%\n",
+              test::scheme_name(GetParam()).c_str(), mesh.element_count(), step, coarse.discharge,
+              fine.discharge, 100 * dQ);
   EXPECT_LE(std::abs(dQ), 0.02);
   for (size_t k = 0; k < gauge_y.size(); ++k) {
     const double d_eta = coarse.surface[k] - fine.surface[k];
@@ -89,6 +95,11 @@ TEST(PaperChannelStep, ExamplesStepWithinTwoPercentOfTheReference) {
     EXPECT_LE(std::abs(d_eta), 0.02 * fall);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(FlowSchemes, PaperChannelStep, testing::Values(FlowScheme::coupled),
+                         test::flow_scheme_name);
+INSTANTIATE_TEST_SUITE_P(DISABLED_FlowSchemes, PaperChannelStep,
+                         testing::Values(FlowScheme::segregated), test::flow_scheme_name);
 
 }  // namespace
 }  // namespace flotsam

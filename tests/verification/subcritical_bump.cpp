@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../support/flow_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -81,19 +82,26 @@ TEST(SubcriticalBump, DepthFollowsBernoulli) {
 // Courant number sqrt(g h) dt / dx = 4.4 (dt = 0.25 s, cells of 0.25 m): its steady state
 // differs from the Eulerian one by O(dt), so this checks that the explicit terms taken at the
 // departure point keep it within the same 1% of Bernoulli (with them at the arrival point, as
-// before 2026-11-21, the error was 1.7%; now 0.8%).
-TEST(SubcriticalBump, CharacteristicsMarchedToSteadyFollowBernoulli) {
+// before 2026-11-21, the error was 1.7%; now 0.8%). Both steps (flow.scheme).
+class SubcriticalBumpMarched : public testing::TestWithParam<FlowScheme> {};
+
+TEST_P(SubcriticalBumpMarched, CharacteristicsMarchedToSteadyFollowBernoulli) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 25.0, 1.0, 100, 2, true});
-  const Case c = bump_case();
+  Case c = bump_case();
+  c.flow.scheme = GetParam();
   ShallowWaterSolver solver(mesh, c, bump_options(Advection::characteristics));
   solver.initialize();
   const double change = solver.march_to_steady(0.25, 1e-8, 400.0);
   ASSERT_LE(change, 1e-8);
   const double error = bernoulli_error(solver);
   EXPECT_LE(error, 0.01);
-  std::printf("bump, characteristics at dt = 0.25 s: max relative depth error %.3e at t = %g s\n",
-              error, solver.time());
+  std::printf(
+      "bump, %s, characteristics at dt = 0.25 s: max relative depth error %.3e at t = %g s\n",
+      test::scheme_name(GetParam()).c_str(), error, solver.time());
 }
+
+INSTANTIATE_TEST_SUITE_P(FlowSchemes, SubcriticalBumpMarched, test::both_flow_schemes,
+                         test::flow_scheme_name);
 
 }  // namespace
 }  // namespace flotsam

@@ -7,20 +7,28 @@
 //   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-(1-theta) g G eta^n) - f k x u^n  (M-20)
 //   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - theta g G eta^n
 //                    - (1-theta) K_nu u^n - T_nu(u^n) + F                     (M-21) per component
-//   3. elevation   (M_1/dt + theta^2 g G^T D G) d_eta = S - B + G^T H (theta u~ + (1-theta) u^n)
-//                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a)        (M-22), SPD
+//   3. elevation   (M_1/dt + theta^2 g G^T D G - C) d_eta = S - B + G^T H (theta u~ + (1-theta)
+//   u^n)
+//                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a),  C x = G^T (theta u^n_a x_a)
+//                    (M-22): SPD but for C, the depth's change carried by the current
 //   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
 //
 // M_L is the lumped P2 mass (diagonal scaling, Hinton-Rock-Zienkiewicz: the consistent diagonal
-// scaled to the element's area; row sums would give the P2 vertices zero mass), G_ai =
-// (N_a, grad M_i) the surface slope (3) / continuity flux (9) operator, K_nu the scalar
+// scaled to the element's area; row sums would give the P2 vertices zero mass), G the surface
+// slope (3) and, transposed, the continuity flux (9), both integrated with M_L's own nodal
+// quadrature: G_ai = sum over the elements e at node a of m_a^e / |e| integral_e grad M_i, so
+// that M_L^-1 G eta is at every node the mean of its elements' slopes (the exact (N_a, grad M_i)
+// is zero at P2 vertices: their shape functions integrate to zero), K_nu the scalar
 // viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
 // P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
-// velocity nodes), M_1 the P1 mass. The elevation system is solved by conjugate gradients
-// preconditioned with a CHOLMOD Cholesky factor of an earlier step's matrix (exact after a
-// refactorisation), refactorised when the iterations exceed max_reused_iterations.
+// velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing (7) is integrated
+// in M_L's quadrature too. The elevation system is solved by GMRES preconditioned with a CHOLMOD
+// Cholesky factor of an earlier step's SPD part, refactorised when GMRES needs more than
+// max_extra_iterations beyond what it needed after the last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
+#include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -47,6 +55,8 @@ class SegregatedStep {
   /// Conjugate-gradient iterations of the elevation solves so far, and factorisations.
   long elevation_iterations() const { return elevation_iterations_; }
   long factorisations() const { return factorisations_; }
+  /// Conjugate-gradient iterations of the momentum predictor (M-21) so far, both components.
+  long momentum_iterations() const { return momentum_iterations_; }
 
  private:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -60,18 +70,32 @@ class SegregatedStep {
   void assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads);
   void predict_velocity(const ShallowWaterSolver& s, const Prediction& in, std::vector<double>& u,
                         std::vector<double>& v);
-  Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b);
+  using Operator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
+  /// (M-22): x with apply(x) = b, preconditioned by the Cholesky factor of the SPD part S.
+  void plan_schur_matrix();
+  Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
+                                  const Operator& apply);
 
   const Mesh& mesh_;
-  std::vector<double> m_;        // [m^2] lumped P2 mass per node
-  SparseMatrix G_;               // (2 N2) x N1, rows 2a + c: (N_a, d M_i / d x_c) [m]
-  SparseMatrix M1_;              // P1 mass [m^2]
+  std::vector<double> m_;  // [m^2] lumped P2 mass per node
+  SparseMatrix G_;         // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
+  std::vector<std::array<int, 2>> mid_ends_;  // the two vertices of each mid node (index - N1)
+  SparseMatrix M1_;                           // P1 mass [m^2]
+  SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
+  std::vector<int> schur_node_start_;  // per P2 node, its range in schur_vertex_/schur_slope_
+  std::vector<int> schur_vertex_;      // the vertices i of node a's rows of G
+  std::vector<Vec2> schur_slope_;      // (G_2a,i, G_2a+1,i) [m]
+  std::vector<int> schur_position_;    // per node, per pair (i, j) of its vertices: S_'s value
+  std::vector<int> m1_position_;       // M_1's entries in S_'s values
+  std::vector<double> m1_value_;       // [m^2]
   SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
   std::vector<int> k_position_;  // per element 36 positions in K_'s values
+  std::vector<double> k_geometry_;  // per element (grad N_a, grad N_b), b >= a: 21 [-]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
-  int factor_age_ = -1;  // steps since the factorisation; -1: none
-  long elevation_iterations_ = 0, factorisations_ = 0;
+  int factor_age_ = -1;       // steps since the factorisation; -1: none
+  int fresh_iterations_ = 0;  // GMRES iterations of the solve that followed the factorisation
+  long elevation_iterations_ = 0, factorisations_ = 0, momentum_iterations_ = 0;
 };
 
 }  // namespace flotsam
