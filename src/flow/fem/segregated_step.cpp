@@ -259,27 +259,22 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
     ElementValues ev;
     compute_element_values(mesh_, e, ev, false);
     const auto& el = mesh_.elements[e];
-    ElementFlowAverage avg;
-    std::array<double, 6> diagonal{};
-    for (int q = 0; q < triangle_point_count; ++q) {
-      avg.area += ev.JxW[q];
-      for (int b = 0; b < 6; ++b) {
-        const Vec2 ub(n.u[el[b]], n.v[el[b]]);
-        avg.u += ev.JxW[q] * ev.N2[q][b] * ub;
-        avg.grad_u += ev.JxW[q] * ub * ev.dN2[q][b].transpose();
-        avg.H -= ev.JxW[q] * ev.N2[q][b] * s.z_b_[el[b]];
+    std::array<double, 6> u, v, z_b, diagonal{};
+    std::array<double, 3> eta;
+    for (int b = 0; b < 6; ++b) {
+      u[b] = n.u[el[b]];
+      v[b] = n.v[el[b]];
+      z_b[b] = s.z_b_[el[b]];
+      for (int q = 0; q < triangle_point_count; ++q)
         diagonal[b] += ev.N2[q][b] * ev.N2[q][b] * ev.JxW[q];
-      }
-      for (int j = 0; j < 3; ++j) avg.H += ev.JxW[q] * ev.N1[q][j] * n.eta[el[j]];
     }
+    for (int j = 0; j < 3; ++j) eta[j] = n.eta[el[j]];
+    const ElementFlowAverage avg = element_flow_average(ev, u, v, z_b, eta);
     const double A = avg.area;
-    avg.u /= A;
-    avg.grad_u /= A;
-    avg.H /= A;
-    double nu_t = 0.0;
-    if (flow.turbulence != TurbulenceModel::none)
-      nu_t = eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction, avg);  // (M-3)
-    s.nu_t_[e] = nu_t;
+    const double nu_t =
+        flow.turbulence == TurbulenceModel::none
+            ? 0.0
+            : eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction, avg);  // (M-3)
     const double nu_e = flow.viscosity + nu_t;  // (M-3) [m^2/s]
     double diagonal_sum = 0.0;
     for (double d : diagonal) diagonal_sum += d;

@@ -120,7 +120,6 @@ void ShallowWaterSolver::setup_system() {
   coupled_system_ready_ = false;
   segregated_.reset();
   if (case_.flow.scheme == FlowScheme::coupled) setup_coupled_system();
-  nu_t_.assign(mesh_.element_count(), 0.0);
   open_flux_.assign(mesh_.group_names.size(), 0.0);
   elevation_group_.clear();
   for (const auto& n : bc_.elevation_nodes)
@@ -263,6 +262,31 @@ void ShallowWaterSolver::for_each_element(const std::function<void(int)>& visit)
   }
 }
 
+std::vector<double> ShallowWaterSolver::eddy_viscosity() const {
+  const FlowConfig& flow = case_.flow;
+  std::vector<double> nu_t(mesh_.element_count(), 0.0);
+  if (flow.turbulence == TurbulenceModel::none) return nu_t;
+  const FrictionModel law = FrictionModel::from(flow);
+  for_each_element([&](int e) {
+    FrictionModel friction = law;
+    if (!friction_coefficient_.empty()) friction.coefficient = friction_coefficient_[e];
+    ElementValues ev;
+    compute_element_values(mesh_, e, ev, false);
+    const auto& el = mesh_.elements[e];
+    std::array<double, 6> u, v, z_b;
+    std::array<double, 3> eta;
+    for (int a = 0; a < 6; ++a) {
+      u[a] = state_.u[el[a]];
+      v[a] = state_.v[el[a]];
+      z_b[a] = z_b_[el[a]];
+    }
+    for (int j = 0; j < 3; ++j) eta[j] = state_.eta[el[j]];
+    nu_t[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction,
+                                      element_flow_average(ev, u, v, z_b, eta));  // (M-3)
+  });
+  return nu_t;
+}
+
 void ShallowWaterSolver::assemble_system(const Iteration& it) {
   const auto& flow = case_.flow;
   const AssemblyParameters p = assembly_parameters(it);
@@ -273,27 +297,13 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
     ElementValues ev;
     compute_element_values(mesh_, e, ev, !it.characteristics);
     ElementState s = element_state(e, it);
-    if (flow.turbulence != TurbulenceModel::none) {
-      ElementFlowAverage avg;
-      for (int q = 0; q < triangle_point_count; ++q)
-        for (int b = 0; b < 6; ++b) {
-          const Vec2 ub(s.u_k[b], s.v_k[b]);
-          const double w = ev.JxW[q];
-          avg.u += w * ev.N2[q][b] * ub;
-          avg.grad_u += w * ub * ev.dN2[q][b].transpose();
-          avg.H -= w * ev.N2[q][b] * s.z_b[b];
-          if (b < 3) avg.H += w * ev.N1[q][b] * s.eta_k[b];
-        }
-      double A = 0.0;
-      for (int q = 0; q < triangle_point_count; ++q) A += ev.JxW[q];
-      avg.u /= A;
-      avg.grad_u /= A;
-      avg.H /= A;
-      avg.area = A;
-      nu_t_[e] = flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p_e.friction,
-                                         avg);  // (M-3)
-    }
-    s.nu_e = flow.viscosity + it.added_viscosity + nu_t_[e];  // (M-3)
+    const double nu_t =
+        flow.turbulence == TurbulenceModel::none
+            ? 0.0
+            : flotsam::eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, p_e.friction,
+                                      element_flow_average(ev, s.u_k, s.v_k, s.z_b,
+                                                           s.eta_k));  // (M-3)
+    s.nu_e = flow.viscosity + it.added_viscosity + nu_t;               // (M-3)
     LocalMatrix K;
     LocalVector F;
     assemble_element(p_e, ev, s, K, F);

@@ -120,13 +120,14 @@ class ShallowWaterSolver {
   double time() const { return state_.time; }
   const FlowState& state() const { return state_; }
   const FlowState& previous_state() const { return previous_; }
-  const std::vector<double>& eta() const { return state_.eta; }        // [m] P1
-  const std::vector<double>& u() const { return state_.u; }            // [m/s] P2
-  const std::vector<double>& v() const { return state_.v; }            // [m/s] P2
-  const std::vector<double>& bed() const { return z_b_; }              // [m] P2
-  std::vector<double> depth() const;                                   // H [m] P2
-  std::vector<double> vorticity() const;                               // dv/dx - du/dy [1/s] P2
-  const std::vector<double>& eddy_viscosity() const { return nu_t_; }  // nu_t [m^2/s] per element
+  const std::vector<double>& eta() const { return state_.eta; }  // [m] P1
+  const std::vector<double>& u() const { return state_.u; }      // [m/s] P2
+  const std::vector<double>& v() const { return state_.v; }      // [m/s] P2
+  const std::vector<double>& bed() const { return z_b_; }        // [m] P2
+  std::vector<double> depth() const;                             // H [m] P2
+  std::vector<double> vorticity() const;                         // dv/dx - du/dy [1/s] P2
+  /// nu_t [m^2/s] per element (M-3) of the present state, as a step from it would take it.
+  std::vector<double> eddy_viscosity() const;
   /// The friction law's coefficient (n, C or K) per element, at the centroid of its corners: the
   /// case's default, its raster, its zones (flow/friction_map.hpp); empty without friction.
   const std::vector<double>& friction_coefficients() const { return friction_coefficient_; }
@@ -198,7 +199,6 @@ class ShallowWaterSolver {
   std::vector<double> u_departure_, v_departure_;
 
   std::vector<double> z_b_;                   // [m] per P2 node
-  std::vector<double> nu_t_;                  // [m^2/s] per element
   std::vector<double> friction_coefficient_;  // n, C or K per element (the law's unit)
   std::vector<double> lumped_p1_;             // [m^2] integral of each P1 basis function
   std::vector<Vec2> element_forces_, node_forces_;

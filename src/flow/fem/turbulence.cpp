@@ -5,6 +5,28 @@
 
 namespace flotsam {
 
+ElementFlowAverage element_flow_average(const ElementValues& ev, const std::array<double, 6>& u,
+                                        const std::array<double, 6>& v,
+                                        const std::array<double, 6>& z_b,
+                                        const std::array<double, 3>& eta) {
+  ElementFlowAverage avg;
+  for (int q = 0; q < triangle_point_count; ++q) {
+    const double w = ev.JxW[q];
+    avg.area += w;
+    for (int b = 0; b < 6; ++b) {
+      const Vec2 ub(u[b], v[b]);
+      avg.u += w * ev.N2[q][b] * ub;
+      avg.grad_u += w * ub * ev.dN2[q][b].transpose();
+      avg.H -= w * ev.N2[q][b] * z_b[b];
+    }
+    for (int j = 0; j < 3; ++j) avg.H += w * ev.N1[q][j] * eta[j];
+  }
+  avg.u /= avg.area;
+  avg.grad_u /= avg.area;
+  avg.H /= avg.area;
+  return avg;
+}
+
 double eddy_viscosity(TurbulenceModel model, double C_s, const FrictionModel& friction,
                       const ElementFlowAverage& a) {
   if (model == TurbulenceModel::none) return 0.0;
