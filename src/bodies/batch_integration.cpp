@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "bodies/body_batch.hpp"
 #include "bodies/body_step.hpp"
 
 // Run-time dispatch: the vector loops built for the default x86-64 (SSE2), AVX2 and AVX-512
@@ -145,6 +144,22 @@ void set_lane(BatchVector& v, int k, const BodyStateVector& y) {
 }
 
 }  // namespace
+
+FLOTSAM_VECTOR_CLONES
+void batch_derivative(const BodySet& bodies, const int* list, int n, const FlowField& flow,
+                      const ForceModel& model, const Lanes& t, const BatchVector& y, int* hints,
+                      BatchVector& dy, BodyLoads* loads) {
+  Batch B;
+  B.bodies.gather(bodies, list, n, model.rho);
+  bool active[W];
+  for (int k = 0; k < W; ++k) {
+    B.set_reference(k, bodies.angle[B.bodies.index[k]]);
+    B.hint[k] = hints[k];
+    active[k] = k < n;
+  }
+  evaluate(B, bodies, flow, model, t, y, active, dy, loads);
+  for (int k = 0; k < n; ++k) hints[k] = B.hint[k];
+}
 
 FLOTSAM_VECTOR_CLONES
 void advance_batch(BodySet& bodies, const int* list, int n, const FlowField& flow, double ta,

@@ -10,8 +10,7 @@
 // with; the vector code is built for SSE2 (any x86-64), AVX2 and AVX-512 and picked at run time
 // (GCC's target_clones), all compiled without contracting a * b + c into an FMA (CMakeLists.txt:
 // -ffp-contract=off), so every clone gives the same bits.
-#include "bodies/body_set.hpp"
-#include "bodies/hydrodynamic_forces.hpp"
+#include "bodies/body_batch.hpp"
 #include "flow/flow_field.hpp"
 
 namespace flotsam {
@@ -23,5 +22,13 @@ namespace flotsam {
 void advance_batch(BodySet& bodies, const int* list, int n, const FlowField& flow, double ta,
                    double tb, double step_span, const ForceModel& model, double min_step_fraction,
                    long& accepted, long& rejected);
+
+/// f(t, y) of (M-5) for the bodies list[0..n) (n <= batch_width) at each lane's time and
+/// state, the axis referred to each body's angle in `bodies`: body_derivative for a batch (what
+/// advance_batch evaluates at every stage). `hints` per lane (updated); `loads` (optional, one
+/// per lane) receives the forces.
+void batch_derivative(const BodySet& bodies, const int* list, int n, const FlowField& flow,
+                      const ForceModel& model, const Lanes& t, const BatchVector& y, int* hints,
+                      BatchVector& dy, BodyLoads* loads = nullptr);
 
 }  // namespace flotsam
