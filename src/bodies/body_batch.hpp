@@ -4,8 +4,8 @@
 // to vector code (SSE2 on any x86-64, AVX2 or AVX-512 where batch_integration.cpp's run-time
 // dispatch finds them). The laws are those of hydrodynamic_forces.hpp and body_motion.hpp in the
 // same order of operations; only Ganser's R^0.6567 differs, branch_free_pow instead of
-// std::exp(0.6567 * std::log(R)) (core/branch_free_math.hpp: within 6e-15 relative of it), so
-// a batch's derivative is the scalar body_derivative's to a few 1e-15 relative
+// std::exp(0.6567 * std::log(R)) (core/branch_free_math.hpp: within 1.2e-14 relative of it), so
+// a batch's derivative is the scalar body_derivative's to about 1e-14 relative
 // (tests/bodies/body_batch_test.cpp). What branches stays scalar: the flow sampled once per body
 // (and per drag point), the displaced mass and the bed of a grounded body
 // (body_motion.cpp's finish_derivative), the axis far from its reference.
