@@ -171,7 +171,7 @@ void advance_batch(BodySet& bodies, const int* list, int n, const FlowField& flo
   Rkf45Options<6> options[W];
   Rkf45Counters counters[W];
   BodyLoads loads[W];
-  alignas(64) Lanes t, h, t_stage, step, h_try;
+  alignas(64) Lanes t = {}, h = {}, t_stage = {}, step = {}, h_try = {};
   bool done[W], need_k1[W], active[W], lands[W];
   BatchVector y, k[6], y_stage, dy, y5, err;
   for (int j = 0; j < W; ++j) {
