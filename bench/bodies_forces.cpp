@@ -1,23 +1,32 @@
-// Body forces and integration (issue 4 item 7): 100,000 logs in a frozen flow resembling the
-// paper's channel (uniform 0.5 m/s, 10 m deep, 1500 m x 170 m), time per 0.1 s flow step of
-// forces (M-5)-(M-8) plus RKF45 integration, no contacts. Arguments: threads, drag points,
-// and whether the logs start at rest (0: first steps of the transient) or after 20 s of drift
-// (1: the steady regime where every body takes one 0.1 s sub-step).
+// Body forces and integration (issue 4 item 7, issue 18 item 3): 100,000 logs in a frozen flow
+// resembling the paper's channel (0.5 m/s, 10 m deep, 1500 m x 170 m), time per 0.1 s flow step
+// of forces (M-5)-(M-8) plus RKF45 integration, no contacts. Arguments: threads, drag points,
+// whether the logs start at rest (0: first steps of the transient) or after 20 s of drift
+// (1: the steady regime where every body takes one 0.1 s sub-step), and the field the logs
+// sample: 0 the analytic flow (uniform), 1 the FEM engine's, 2 the finite-volume engine's, both
+// on a structured channel mesh of 10 m triangles (5,100 elements) holding that flow after one
+// 1 s step from it, so that sampling (point location, interpolation in space and time) is
+// timed too.
 //   cmake --build build --target bench_bodies_forces && build/bench/bench_bodies_forces
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <memory>
 #include <random>
 
 #include "bodies/analytic_flow.hpp"
 #include "bodies/body_integrator.hpp"
 #include "core/constants.hpp"
+#include "coupling/flow_engines.hpp"
+#include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
 namespace {
 
 constexpr int body_count = 100000;
-constexpr double flow_step = 0.1;  // [s]
+constexpr double flow_step = 0.1;                                               // [s]
+constexpr double channel_length = 1500.0, channel_width = 170.0, depth = 10.0;  // [m]
+constexpr double speed = 0.5;                                                   // [m/s]
 
 BodySet channel_logs() {
   BodySet bodies;
@@ -32,17 +41,56 @@ BodySet channel_logs() {
   return bodies;
 }
 
+/// The channel's flow in an engine: 0.5 m/s, 10 m deep over a flat bed, the discharge in at
+/// the left, the surface held at the right, walls at the sides, stepped once by 1 s.
+struct EngineFlow {
+  Mesh mesh;
+  Case flow_case;
+  std::unique_ptr<FlowEngine> engine;
+
+  explicit EngineFlow(FlowEngineKind kind) {
+    mesh = make_rectangle_mesh(
+        {.length = channel_length, .width = channel_width, .nx = 150, .ny = 17});
+    flow_case.name = "bench_bodies_forces";
+    flow_case.mesh.kind = MeshSource::Kind::file;
+    flow_case.flow.engine = kind;
+    flow_case.flow.initial_eta_start = flow_case.flow.initial_eta_end = depth;
+    flow_case.flow.initial_u = Expression("0.5", "bench");
+    flow_case.flow.initial_v = Expression("0", "bench");
+    flow_case.flow.viscosity = 0.01;
+    flow_case.flow.friction = FrictionLaw::manning;
+    flow_case.flow.friction_coefficient = 0.03;
+    const TimeSeries Q(speed * depth * channel_width);  // [m^3/s]
+    flow_case.flow.boundaries = {
+        {BoundaryCondition::Kind::discharge, "left", Q, TimeSeries(0.0)},
+        {BoundaryCondition::Kind::elevation, "right", TimeSeries(depth), TimeSeries(0.0)},
+        {BoundaryCondition::Kind::wall, "bottom", TimeSeries(0.0), TimeSeries(0.0)},
+        {BoundaryCondition::Kind::wall, "top", TimeSeries(0.0), TimeSeries(0.0)}};
+    flow_case.time = {.end = 10.0, .step = 1.0, .mode = CouplingMode::one_way};
+    engine = make_flow_engine(mesh, flow_case);
+    engine->initialize();
+    engine->step(1.0);
+  }
+};
+
 void BM_BodyStep(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   ForceModel model;
   model.physics.drag_points = static_cast<int>(state.range(1));
   const bool steady = state.range(2) != 0;
+  const int field = static_cast<int>(state.range(3));
   AnalyticFlowSpec spec;
-  spec.velocity = {0.5, 0.0};
-  spec.eta = 10.0;
+  spec.velocity = {speed, 0.0};
+  spec.eta = depth;
   spec.domain_min = {0.0, 0.0};
-  spec.domain_max = {1500.0, 170.0};
-  const AnalyticFlow flow(spec);
+  spec.domain_max = {channel_length, channel_width};
+  const AnalyticFlow analytic(spec);
+  std::unique_ptr<EngineFlow> engine;
+  if (field != 0)
+    engine = std::make_unique<EngineFlow>(field == 1 ? FlowEngineKind::fem : FlowEngineKind::fv);
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  const FlowField& flow =
+      engine ? engine->engine->field() : static_cast<const FlowField&>(analytic);
   const BodyIntegrator integrator(model);
   BodySet bodies = channel_logs();
   double t = 0.0;
@@ -71,11 +119,15 @@ void BM_BodyStep(benchmark::State& state) {
 }
 
 BENCHMARK(BM_BodyStep)
-    ->ArgNames({"threads", "drag_points", "steady"})
-    ->Args({1, 1, 1})
-    ->Args({2, 1, 1})
-    ->Args({2, 5, 1})
-    ->Args({2, 1, 0})
+    ->ArgNames({"threads", "drag_points", "steady", "field"})
+    ->Args({1, 1, 1, 0})
+    ->Args({2, 1, 1, 0})
+    ->Args({2, 5, 1, 0})
+    ->Args({2, 1, 0, 0})
+    ->Args({1, 1, 1, 1})
+    ->Args({2, 1, 1, 1})
+    ->Args({1, 1, 1, 2})
+    ->Args({2, 1, 1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(1.0);

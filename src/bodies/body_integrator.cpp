@@ -3,49 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bodies/body_motion.hpp"
-#include "bodies/rkf45.hpp"
+#include "bodies/batch_integration.hpp"
+#include "bodies/body_batch.hpp"
+#include "bodies/body_step.hpp"
 
 namespace flotsam {
-
-namespace {
-
-/// The per-body hooks of rkf45_integrate: friction stopping a grounded body (spec 3.4: friction
-/// may stop a body within a step but not reverse it), and recording. The step has no bound of its
-/// own: the contact intervals (ContactWorld::plan) keep bodies that may touch from tunnelling.
-struct BodyStepHooks {
-  const BodyLoads& loads;  // loads at the start of the current step
-
-  double max_step(double /*t*/, const BodyStateVector& /*y*/) const { return 1e300; }
-
-  bool event(const BodyStateVector& y, BodyStateVector& y_new) const {
-    if (!loads.grounded) return false;
-    bool stopped = false;
-    if (y.segment<2>(3).squaredNorm() > 0.0 && y.segment<2>(3).dot(y_new.segment<2>(3)) < 0.0) {
-      y_new.segment<2>(3).setZero();  // sliding would reverse: the body stops
-      stopped = true;
-    }
-    if (y[5] != 0.0 && y[5] * y_new[5] < 0.0) {
-      y_new[5] = 0.0;
-      stopped = true;
-    }
-    return stopped;
-  }
-
-  void accepted(double /*t*/, const BodyStateVector& /*y*/) const {}
-};
-
-/// Keeps the loads of body i's last accepted sub-step, its element, and its state.
-void record_loads(BodySet& bodies, int i, const BodyLoads& loads, int hint) {
-  bodies.element_hint[i] = hint;
-  bodies.drag_force[i] = loads.drag;
-  bodies.bed_force[i] = loads.bed;
-  bodies.reaction_force[i] = loads.reaction;
-  bodies.torque[i] = loads.torque;
-  if (!loads.outside) bodies.state[i] = loads.grounded ? BodyState::grounded : BodyState::floating;
-}
-
-}  // namespace
 
 ContactSchedule ContactSchedule::one_group(const BodySet& bodies, int intervals) {
   ContactSchedule schedule;
@@ -71,16 +33,8 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
     record_loads(bodies, i, loads, hint);
     return;
   }
-  const double l = bodies.width[i];
-  const double tol = model_.physics.rk_tolerance;
-
-  // Weighted error norm (spec 3.5): positions to tol * l [m], angle to tol [rad]; velocities to
-  // tol [m/s], [rad/s] plus tol relative.
-  Rkf45Options<6> options;
-  options.abs_tol << tol * l, tol * l, tol, tol, tol, tol;
-  options.rel_tol << 0.0, 0.0, 0.0, tol, tol, tol;
-  options.h_min = options_.min_step_fraction * step_span;
-  options.h_max = tb - ta;
+  const Rkf45Options<6> options =
+      body_step_options(bodies, i, model_, options_.min_step_fraction, ta, tb, step_span);
 
   AxisReference reference(bodies.angle[i]);  // the axis at the current step's start
   const auto f = [&](double t, const BodyStateVector& y) {
@@ -104,13 +58,25 @@ void BodyIntegrator::advance_body(BodySet& bodies, int i, const FlowField& flow,
 void BodyIntegrator::advance_bodies(BodySet& bodies, const std::vector<int>& list,
                                     const FlowField& flow, double ta, double tb, double step_span,
                                     IntegrationStats& stats) const {
-  const int n = static_cast<int>(list.size());
-  long accepted = 0, rejected = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted, rejected) if (n >= 256)
-  for (int k = 0; k < n; ++k) {
-    const int i = list[k];
+  // The bodies that move, in batches (batch_integration.hpp) unless the one-body path is asked
+  // for; anchored bodies one at a time.
+  std::vector<int> single, batched;
+  for (const int i : list) {
     if (bodies.state[i] == BodyState::gone) continue;
-    advance_body(bodies, i, flow, ta, tb, step_span, accepted, rejected);
+    (options_.batch && !bodies.anchored[i] ? batched : single).push_back(i);
+  }
+  long accepted = 0, rejected = 0;
+  const int n = static_cast<int>(single.size());
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted, rejected) if (n >= 256)
+  for (int k = 0; k < n; ++k)
+    advance_body(bodies, single[k], flow, ta, tb, step_span, accepted, rejected);
+  const int m = static_cast<int>(batched.size());
+  const int batches = (m + batch_width - 1) / batch_width;
+#pragma omp parallel for schedule(dynamic, 8) reduction(+ : accepted, rejected) if (m >= 256)
+  for (int b = 0; b < batches; ++b) {
+    const int first = b * batch_width;
+    advance_batch(bodies, batched.data() + first, std::min(batch_width, m - first), flow, ta, tb,
+                  step_span, model_, options_.min_step_fraction, accepted, rejected);
   }
   stats.accepted += accepted;
   stats.rejected += rejected;

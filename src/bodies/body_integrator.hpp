@@ -16,9 +16,9 @@
 // never touch one another before the step's end, so each is stepped through it in turn. Without
 // a hook nothing is linked.
 //
-// The loop over bodies runs in parallel (OpenMP); a body's result depends on nothing but its own
-// data, and the only sums across bodies are integer counters, so results are bit-identical for
-// any number of threads.
+// The loop over bodies (or batches of them) runs in parallel (OpenMP); a body's result depends on
+// nothing but its own data (a batch's lanes never mix), and the only sums across bodies are integer
+// counters, so results are bit-identical for any number of threads.
 #include <functional>
 #include <vector>
 
@@ -67,6 +67,11 @@ struct IntegrationStats {
 
 struct IntegratorOptions {
   double min_step_fraction = 1e-6;  // h_min as a fraction of the flow step [-]
+  // true: the bodies that move are integrated batch_width at a time, each stage's forces in
+  // vector code (batch_integration.hpp); false: one body at a time with the scalar laws of
+  // hydrodynamic_forces.hpp (the reference the batches are tested against). Anchored bodies
+  // always take the one-body path.
+  bool batch = true;
 };
 
 class BodyIntegrator {

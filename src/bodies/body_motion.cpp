@@ -11,9 +11,8 @@ Vec2 AxisReference::at(double angle) const {
   const double d = angle - theta;  // [rad]
   if (d == 0.0) return axis;
   if (std::abs(d) > 0.05) return {std::cos(angle), std::sin(angle)};
-  const double d2 = d * d;
-  const double c = 1.0 - d2 / 2 * (1.0 - d2 / 12 * (1.0 - d2 / 30 * (1.0 - d2 / 56)));
-  const double s = d * (1.0 - d2 / 6 * (1.0 - d2 / 20 * (1.0 - d2 / 42)));
+  double c, s;
+  small_turn(d, c, s);
   return {c * axis.x() - s * axis.y(), s * axis.x() + c * axis.y()};
 }
 
@@ -28,6 +27,44 @@ void set_body_state(BodySet& bodies, int i, const BodyStateVector& y) {
   bodies.angle[i] = y[2];
   bodies.velocity[i] = y.segment<2>(3);
   bodies.angular_velocity[i] = y[5];
+}
+
+void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
+                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads) {
+  const double m_p = bodies.mass[i];
+  const double m_f = water.m_f;
+  const double C_a = model.physics.added_mass_coefficient;
+  Vec2 F = water.fluid + water.drag.force;     // [N]
+  double T = water.drag.torque + water.T_rot;  // [N m]
+
+  // Bed contact of a grounded body (spec 3.4).
+  Vec2 F_bed = Vec2::Zero();
+  bool held = false, spin_held = false;
+  if (!water.floating) {
+    const double W_eff = effective_weight(m_p, m_f, model.g);
+    F_bed = slope_force(W_eff, water.grad_zb);
+    const BedFriction friction = bed_friction(water.u_p, water.omega, F + F_bed, T,
+                                              model.physics.bed_friction, W_eff, bodies.length[i]);
+    F_bed += friction.force;
+    T += friction.torque;
+    held = friction.held;
+    spin_held = friction.spin_held;
+  }
+  F += F_bed;
+
+  // (M-5); a held body does not move, exactly (bed_contact.hpp says why not F / m).
+  const Vec2 du_p_dt = held ? Vec2::Zero() : Vec2(F / (m_p + C_a * m_f));
+  dy.segment<2>(3) = du_p_dt;
+  dy[5] = spin_held ? 0.0 : T / bodies.inertia[i];
+  if (loads) {
+    loads->drag = water.drag.force;
+    loads->fluid = water.fluid;
+    loads->bed = F_bed;
+    loads->reaction = water.drag.force + C_a * m_f * (water.Du_f_Dt - du_p_dt);  // spec 5 step 3
+    loads->torque = T;
+    loads->grounded = !water.floating;
+    loads->outside = false;
+  }
 }
 
 BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const BodyStateVector& y,
@@ -65,37 +102,9 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
   const double T_rot = rotation_torque(model.rho, model.physics.rotation_coefficient, h_s,
                                        bodies.length[i], omega, fluid_spin(at_G.grad_u));
   const Vec2 F_fluid = (1.0 + C_a) * m_f * Du_f_Dt;
-  Vec2 F = F_fluid + drag.force;   // [N]
-  double T = drag.torque + T_rot;  // [N m]
-
-  // Bed contact of a grounded body (spec 3.4).
-  Vec2 F_bed = Vec2::Zero();
-  bool held = false, spin_held = false;
-  if (!floating) {
-    const double W_eff = effective_weight(m_p, m_f, model.g);
-    F_bed = slope_force(W_eff, at_G.grad_zb);
-    const BedFriction friction =
-        bed_friction(u_p, omega, F + F_bed, T, model.physics.bed_friction, W_eff, bodies.length[i]);
-    F_bed += friction.force;
-    T += friction.torque;
-    held = friction.held;
-    spin_held = friction.spin_held;
-  }
-  F += F_bed;
-
-  // (M-5); a held body does not move, exactly (bed_contact.hpp says why not F / m).
-  const Vec2 du_p_dt = held ? Vec2::Zero() : Vec2(F / (m_p + C_a * m_f));
-  dy.segment<2>(3) = du_p_dt;
-  dy[5] = spin_held ? 0.0 : T / bodies.inertia[i];
-  if (loads) {
-    loads->drag = drag.force;
-    loads->fluid = F_fluid;
-    loads->bed = F_bed;
-    loads->reaction = drag.force + C_a * m_f * (Du_f_Dt - du_p_dt);  // spec 5 step 3
-    loads->torque = T;
-    loads->grounded = !floating;
-    loads->outside = false;
-  }
+  finish_derivative(bodies, i, model,
+                    {u_p, omega, floating, m_f, Du_f_Dt, F_fluid, drag, T_rot, at_G.grad_zb}, dy,
+                    loads);
   return dy;
 }
 

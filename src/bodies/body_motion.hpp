@@ -32,6 +32,13 @@ struct BodyLoads {
   bool outside = false;          // G is outside the domain: no forces, the body coasts
 };
 
+/// cos d and sin d by their Taylor series to 8th order, for |d| <= 0.05 [rad] (AxisReference).
+inline void small_turn(double d, double& c, double& s) {
+  const double d2 = d * d;
+  c = 1.0 - d2 / 2 * (1.0 - d2 / 12 * (1.0 - d2 / 30 * (1.0 - d2 / 56)));
+  s = d * (1.0 - d2 / 6 * (1.0 - d2 / 20 * (1.0 - d2 / 42)));
+}
+
 /// The long axis at an angle close to a reference one whose axis is known: within a step a body
 /// turns by little, so e(theta) = R(theta - theta_ref) e(theta_ref) with the rotation's Taylor
 /// series (to 8th order: round-off below 0.05 rad) saves a sincos per RK stage; farther away it
@@ -46,6 +53,25 @@ struct AxisReference {
 /// The state of body i as a vector, and back.
 BodyStateVector body_state(const BodySet& bodies, int i);
 void set_body_state(BodySet& bodies, int i, const BodyStateVector& y);
+
+/// What the water does to body i at one instant, before the bed's part (spec 3.4).
+struct WaterLoads {
+  Vec2 u_p;       // the body's velocity [m/s]
+  double omega;   // its spin [rad/s]
+  bool floating;  // H(G) > d and lighter than water
+  double m_f;     // displaced mass [kg]
+  Vec2 Du_f_Dt;   // the fluid's acceleration at G [m/s^2]
+  Vec2 fluid;     // (1 + C_a) m_f Du_f/Dt [N]
+  Drag drag;      // F_drag [N] and T_drag [N m] (M-6, M-7)
+  double T_rot;   // rotation resistance (M-8) [N m]
+  Vec2 grad_zb;   // bed slope at G [-]
+};
+
+/// The rest of (M-5) once the water's forces are known: the bed's (spec 3.4) when grounded, then
+/// du_p/dt and domega/dt into dy (its first three components untouched); `loads` (optional)
+/// receives the forces.
+void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
+                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads);
 
 /// f(t, y) of (M-5) for body i; `hint` is the element of G (updated); `loads` (optional)
 /// receives the forces; `reference` (optional) speeds up the axis.

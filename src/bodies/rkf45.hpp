@@ -90,6 +90,26 @@ double rkf45_error_norm(const RkVector<N>& err, const RkVector<N>& y, const RkVe
 /// h_opt = 0.8 h (1/|err|)^(1/5) (spec 3.5), with |err| the weighted norm (tolerance 1).
 double rkf45_optimal_step(double h, double error_norm);
 
+/// The step control of spec 3.5 after a trial step of length `step` from t (h_try before the
+/// landing was cut to t1 - t; `lands`: the step ends at t1) with weighted error `norm`:
+/// rejected (returns false, h = the retry's step) unless norm <= 1, `forced` (an event) or step
+/// <= h_min; accepted (returns true, t = the step's end, h = the next step's proposal).
+inline bool rkf45_control(double& t, double& h, double t1, double h_try, double step, bool lands,
+                          double norm, bool forced, double h_min, double h_max,
+                          Rkf45Counters& counters) {
+  const double h_opt = rkf45_optimal_step(step, norm);
+  if (norm > 1.0 && !forced && step > h_min) {  // reject, retry smaller
+    ++counters.rejected;
+    h = std::max({h_opt, 0.5 * step, h_min});
+    return false;
+  }
+  ++counters.accepted;
+  const double grown = std::min({h_opt, 1.5 * step, h_max});
+  h = lands && step < h_try ? std::max(h_try, grown) : grown;  // a short landing step
+  t = lands ? t1 : t + step;                                   // keeps the proposal
+  return true;
+}
+
 /// No extra step bound and no events.
 struct NoStepHooks {
   template <class Y>
@@ -127,16 +147,9 @@ RkVector<N> rkf45_integrate(Rhs&& f, First&& first, double t0, double t1, RkVect
       rkf45_step<N>(f, t, y, step, k1, y5, err);
       const double norm = rkf45_error_norm<N>(err, y, y5, options);
       const bool forced = hooks.event(y, y5);
-      const double h_opt = rkf45_optimal_step(step, norm);
-      if (norm > 1.0 && !forced && step > options.h_min) {  // reject, retry smaller
-        ++counters.rejected;
-        h = std::max({h_opt, 0.5 * step, options.h_min});
-        continue;
-      }
-      ++counters.accepted;
-      const double grown = std::min({h_opt, 1.5 * step, options.h_max});
-      h = lands && step < h_try ? std::max(h_try, grown) : grown;  // a short landing step
-      t = lands ? t1 : t + step;                                   // keeps the proposal
+      if (!rkf45_control(t, h, t1, h_try, step, lands, norm, forced, options.h_min, options.h_max,
+                         counters))
+        continue;  // rejected: retry smaller
       y = y5;
       hooks.accepted(t, y);
       break;

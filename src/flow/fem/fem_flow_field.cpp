@@ -10,7 +10,20 @@
 
 namespace flotsam {
 
-FemFlowField::FemFlowField(ShallowWaterSolver& solver) : solver_(solver), locator_(solver.mesh()) {}
+FemFlowField::FemFlowField(ShallowWaterSolver& solver) : solver_(solver), locator_(solver.mesh()) {
+  // A straight element's map x = x_0 + r (x_1 - x_0) + s (x_2 - x_0) has a constant Jacobian:
+  // its J^-T once here instead of the isoparametric sum at every sample.
+  const Mesh& mesh = solver_.mesh();
+  straight_inverse_.resize(mesh.element_count(), Mat2::Zero());
+  for (int e = 0; e < mesh.element_count(); ++e) {
+    if (mesh.is_curved(e)) continue;
+    const auto& el = mesh.elements[e];
+    Mat2 J;
+    J.col(0) = mesh.nodes[el[1]] - mesh.nodes[el[0]];
+    J.col(1) = mesh.nodes[el[2]] - mesh.nodes[el[0]];
+    straight_inverse_[e] = J.inverse().transpose();
+  }
+}
 
 FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
   const Location where = locator_.locate(p, hint);
@@ -26,10 +39,12 @@ FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
   const P2Values N = p2_values(where.r, where.s);
   const P2Gradients g2 = p2_reference_gradients(where.r, where.s);
   const P1Values M = p1_values(where.r, where.s);
-  const P1Gradients g1 = p1_reference_gradients();
-  Mat2 J = Mat2::Zero();  // isoparametric map at (r, s)
-  for (int k = 0; k < 6; ++k) J += mesh.nodes[el[k]] * g2[k].transpose();
-  const Mat2 J_inv_T = J.inverse().transpose();
+  Mat2 J_inv_T = straight_inverse_[where.element];
+  if (where.curved) {
+    Mat2 J = Mat2::Zero();  // isoparametric map at (r, s)
+    for (int k = 0; k < 6; ++k) J += mesh.nodes[el[k]] * g2[k].transpose();
+    J_inv_T = J.inverse().transpose();
+  }
 
   const FlowState& s0 = solver_.previous_state();
   const FlowState& s1 = solver_.state();
@@ -53,7 +68,6 @@ FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
     eta0 += M[j] * s0.eta[el[j]];
     eta1 += M[j] * s1.eta[el[j]];
   }
-  (void)g1;
   out.eta = (1 - alpha) * eta0 + alpha * eta1;
   out.H = out.eta - z_b;
   out.u = (1 - alpha) * u0 + alpha * u1;

@@ -5,6 +5,8 @@
 // become per-element forces per unit mass, F_bodies = - F_x / (rho H A_fp) (spec 5), spread over
 // the elements whose centroid lies in the footprint (the element holding the centre when none
 // does), scaled so that sum_e rho (integral of H over e) F_e = - F_x to round-off.
+#include <vector>
+
 #include "flow/fem/shallow_water_solver.hpp"
 #include "flow/flow_field.hpp"
 #include "mesh/point_locator.hpp"
@@ -24,6 +26,7 @@ class FemFlowField final : public FlowField {
  private:
   ShallowWaterSolver& solver_;
   PointLocator locator_;
+  std::vector<Mat2> straight_inverse_;  // J^-T of each straight element (constant on it)
 };
 
 }  // namespace flotsam
