@@ -259,17 +259,17 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
     ElementValues ev;
     compute_element_values(mesh_, e, ev, false);
     const auto& el = mesh_.elements[e];
-    std::array<double, 6> u, v, z_b, diagonal{};
-    std::array<double, 3> eta;
+    std::array<double, 6> u_e, v_e, z_e, diagonal{};
+    std::array<double, 3> eta_e;
     for (int b = 0; b < 6; ++b) {
-      u[b] = n.u[el[b]];
-      v[b] = n.v[el[b]];
-      z_b[b] = s.z_b_[el[b]];
+      u_e[b] = n.u[el[b]];
+      v_e[b] = n.v[el[b]];
+      z_e[b] = s.z_b_[el[b]];
       for (int q = 0; q < triangle_point_count; ++q)
         diagonal[b] += ev.N2[q][b] * ev.N2[q][b] * ev.JxW[q];
     }
-    for (int j = 0; j < 3; ++j) eta[j] = n.eta[el[j]];
-    const ElementFlowAverage avg = element_flow_average(ev, u, v, z_b, eta);
+    for (int j = 0; j < 3; ++j) eta_e[j] = n.eta[el[j]];
+    const ElementFlowAverage avg = element_flow_average(ev, u_e, v_e, z_e, eta_e);
     const double A = avg.area;
     const double nu_t =
         flow.turbulence == TurbulenceModel::none
