@@ -54,6 +54,14 @@ ContactConfig read_contact(const YamlMap& m) {
   c.position_iterations = static_cast<int>(
       m.integer("position_iterations", c.position_iterations, Range::between(0, 1e6)));
   c.allowed_overlap = m.number("allowed_overlap", c.allowed_overlap, Range{0.0, 1.0, false, true});
+  if (const auto solver = m.find("solver")) {
+    c.solver = solver->choice<ContactSolverKind>(
+        {{"sequential_impulses", ContactSolverKind::sequential_impulses},
+         {"soft_step", ContactSolverKind::soft_step}});
+  }
+  c.substeps = static_cast<int>(m.integer("substeps", c.substeps, Range::between(1, 64)));
+  c.contact_hertz = m.number("contact_hertz", c.contact_hertz, Range::positive());
+  c.damping_ratio = m.number("damping_ratio", c.damping_ratio, Range::non_negative());
   return c;
 }
 
