@@ -10,14 +10,14 @@
 // walls, and the logs whose centre is past the piers (must be 0).
 //
 //   cmake --build <build> --target bench_contacts_vs_box2d
-//   <build>/bench/bench_contacts_vs_box2d            # about 3 minutes; figures: performance.md
+//   <build>/bench/bench_contacts_vs_box2d      # about 10 minutes idle; figures: performance.md
+//   <build>/bench/bench_contacts_vs_box2d 10000 --no-sequential
 #include <box2d/box2d.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,8 +69,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind solver) {
   ContactConfig config = jam_contact_config();
   config.solver = solver;
-  if (const char* e = std::getenv("HZ")) config.contact_hertz = std::atof(e);
-  if (const char* e = std::getenv("SUB")) config.substeps = std::atoi(e);
   ContactWorld world(config);
   for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
   double sweeps = 0.0, second_solves = 0.0, islands = 0.0;

@@ -222,21 +222,44 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
       p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
     }
   };
-  for (const auto& [i, j] : body_pairs_) {
+  // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
+  // contacts on any number of threads. Each footprint is built once (one cos, sin per body).
+  rectangles_.resize(boxes_.size());
+  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i)
+    if (active_[i]) rectangles_[i] = body_rectangle(bodies, i);
+  constexpr std::size_t parallel_pairs = 2000;  // [-] threads pay off from a few thousand
+  const int body_pairs = static_cast<int>(body_pairs_.size());
+  const int wall_pairs = static_cast<int>(wall_pairs_.size());
+  manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
+#pragma omp parallel for schedule(static) if (manifolds_.size() >= parallel_pairs)
+  for (int k = 0; k < body_pairs + wall_pairs; ++k) {
+    if (k < body_pairs) {
+      const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
+      const double slop = config_.allowed_overlap * std::min(bodies.width[i], bodies.width[j]);
+      manifolds_[k] = collide_rectangles(rectangles_[i], rectangles_[j],
+                                         margin_ * slop + reach_[i] + reach_[j], 0.1 * slop);
+    } else {
+      const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k - body_pairs)];
+      const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
+      manifolds_[k] =
+          collide_rectangle_segment(rectangles_[i], walls.start[s], walls.end[s], walls.normal[s],
+                                    margin_ * slop + reach_[i], 0.1 * slop);
+    }
+  }
+  for (int k = 0; k < body_pairs; ++k) {
+    const Manifold& m = manifolds_[static_cast<std::size_t>(k)];
+    if (m.point_count == 0) continue;
+    const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
     const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
     const double slop = config_.allowed_overlap * width;              // [m]
-    const Manifold m = collide_rectangles(body_rectangle(bodies, i), body_rectangle(bodies, j),
-                                          margin_ * slop + reach_[i] + reach_[j], 0.1 * slop);
-    if (m.point_count == 0) continue;
     contacts_.push_back(make_constraint(m, i, j, -1, config_.friction, slop, width));
     relative(contacts_.back());
   }
-  for (const auto& [i, s] : wall_pairs_) {
-    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
-    const Manifold m =
-        collide_rectangle_segment(body_rectangle(bodies, i), walls.start[s], walls.end[s],
-                                  walls.normal[s], margin_ * slop + reach_[i], 0.1 * slop);
+  for (int k = 0; k < wall_pairs; ++k) {
+    const Manifold& m = manifolds_[static_cast<std::size_t>(body_pairs + k)];
     if (m.point_count == 0) continue;
+    const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k)];
+    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
     contacts_.push_back(make_constraint(m, i, -1, s, config_.friction, slop, bodies.width[i]));
     relative(contacts_.back());
   }

@@ -103,6 +103,8 @@ class ContactWorld {
   BroadPhase broad_phase_ = BroadPhase::sweep_and_prune;
   SweepAndPrune sweep_;
   std::vector<Aabb> boxes_;
+  std::vector<Rectangle> rectangles_;  // footprints of this detection
+  std::vector<Manifold> manifolds_;    // of the body pairs, then of the wall pairs
   std::vector<char> active_;
   std::vector<BodyPair> body_pairs_;
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
