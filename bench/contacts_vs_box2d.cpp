@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,16 +30,17 @@ namespace flotsam {
 namespace {
 
 struct Result {
-  double ms_per_step = 0.0;    // [ms] wall time of one step
-  double largest = 0.0;        // [m] largest overlap, bodies and walls
-  double percentile_99 = 0.0;  // [m] 99th percentile of the overlaps of the contact points
-  int past_piers = 0;          // logs whose centre is downstream of the piers' line
-  double sweeps = 0.0;         // flotsam: mean velocity sweeps per step (its cap: 200)
-  double second_solves = 0.0;  // flotsam: share of the steps solved twice (docs/model.md)
-  double islands = 0.0;        // flotsam: islands per step (contact/islands.hpp)
-  double detect_ms = 0.0;      // flotsam: boxes, broad and narrow phase per step [ms]
-  double solve_ms = 0.0;       // flotsam: the solver per step [ms]
-  double positions_ms = 0.0;   // flotsam: the position stage per step [ms]
+  double ms_per_step = 0.0;      // [ms] wall time of one step
+  double cpu_ms_per_step = 0.0;  // [ms] CPU time of the process per step (all its threads)
+  double largest = 0.0;          // [m] largest overlap, bodies and walls
+  double percentile_99 = 0.0;    // [m] 99th percentile of the overlaps of the contact points
+  int past_piers = 0;            // logs whose centre is downstream of the piers' line
+  double sweeps = 0.0;           // flotsam: mean velocity sweeps per step (its cap: 200)
+  double second_solves = 0.0;    // flotsam: share of the steps solved twice (docs/model.md)
+  double islands = 0.0;          // flotsam: islands per step (contact/islands.hpp)
+  double detect_ms = 0.0;        // flotsam: boxes, broad and narrow phase per step [ms]
+  double solve_ms = 0.0;         // flotsam: the solver per step [ms]
+  double positions_ms = 0.0;     // flotsam: the position stage per step [ms]
 };
 
 // Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
@@ -66,6 +68,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// [s] of CPU used by the process: on a loaded machine, read with one thread, it is the fairer
+// measure of the work (the wall time includes the time the process waited for a core).
+double cpu_seconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
+
 Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind solver) {
   ContactConfig config = jam_contact_config();
   config.solver = solver;
@@ -74,6 +82,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
   double sweeps = 0.0, second_solves = 0.0, islands = 0.0;
   double detect = 0.0, solve = 0.0, positions = 0.0;  // [s] of the last solve of each step
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   for (int k = 0; k < timed; ++k) {
     world.step(scene.bodies, scene.walls, move_jam_logs(scene));
     sweeps += world.profile().velocity_sweeps;
@@ -84,9 +93,10 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
     solve += p.solve;
     positions += p.positions;
   }
-  const double seconds = seconds_since(start);
+  const double seconds = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   Result r = measure(scene);
   r.ms_per_step = 1e3 * seconds / timed;
+  r.cpu_ms_per_step = 1e3 * cpu / timed;
   r.sweeps = sweeps / timed;
   r.second_solves = second_solves / timed;
   r.islands = islands / timed;
@@ -145,14 +155,16 @@ Result run_box2d(JamScene scene, int warm_up, int timed) {
   };
   for (int k = 0; k < warm_up; ++k) step();
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   for (int k = 0; k < timed; ++k) step();
-  const double seconds = seconds_since(start);
+  const double seconds = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   for (int i = 0; i < b.size(); ++i) {
     b.position[i] = {logs[i]->GetPosition().x, logs[i]->GetPosition().y};
     b.angle[i] = logs[i]->GetAngle();
   }
   Result r = measure(scene);
   r.ms_per_step = 1e3 * seconds / timed;
+  r.cpu_ms_per_step = 1e3 * cpu / timed;
   return r;
 }
 
@@ -173,8 +185,8 @@ int main(int argc, char** argv) {
     }
   }
   if (counts.empty()) counts = {1000, 10000, 50000};
-  std::printf("%7s %-8s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "largest [mm]",
-              "p99 [mm]", "past piers");
+  std::printf("%7s %-8s %12s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "cpu ms/step",
+              "largest [mm]", "p99 [mm]", "past piers");
   for (const int n : counts) {
     JamSceneSpec spec;
     spec.log_count = n;
@@ -189,17 +201,17 @@ int main(int argc, char** argv) {
     const Result s = run_flotsam(scene, warm_up, timed, ContactSolverKind::soft_step);
     for (const auto& [name, r] :
          {std::pair{"box2d", b}, std::pair{"flotsam", f}, std::pair{"soft", s}}) {
-      std::printf("%7d %-8s %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step, 1e3 * r.largest,
-                  1e3 * r.percentile_99, r.past_piers);
+      std::printf("%7d %-8s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
+                  r.cpu_ms_per_step, 1e3 * r.largest, 1e3 * r.percentile_99, r.past_piers);
     }
     for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"soft", s}}) {
       std::printf(
-          "%7d %-8s %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f velocity sweeps per "
+          "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f velocity sweeps per "
           "step, %.0f %% of steps solved twice; last solve per step: detection %.2f ms, solver "
           "%.2f ms, positions %.2f ms)\n",
-          n, name, r.ms_per_step / b.ms_per_step, r.largest / b.largest,
-          r.percentile_99 / b.percentile_99, r.islands, r.sweeps, 100.0 * r.second_solves,
-          r.detect_ms, r.solve_ms, r.positions_ms);
+          n, name, r.ms_per_step / b.ms_per_step, r.cpu_ms_per_step / b.cpu_ms_per_step,
+          r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sweeps,
+          100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms);
     }
     std::fflush(stdout);
   }
