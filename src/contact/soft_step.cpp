@@ -14,6 +14,22 @@ constexpr double max_hertz_per_rate = 0.25;  // f at most this fraction of the s
 // per colour, and a colour of a few hundred contacts is solved in microseconds.
 constexpr std::size_t parallel_contacts = 2000;
 
+// Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
+// impulses x >= 0 that bring the normal velocities vn to the targets, with w = K x + b >= 0 and
+// x_i w_i = 0, b = vn - target - K old; the four cases in turn. Returns old when none holds.
+Vec2 solve_block(const Mat2& K, const Mat2& mass, const Vec2& vn, const Vec2& target,
+                 const Vec2& old) {
+  const Vec2 b = vn - target - K * old;
+  Vec2 x = -(mass * b);
+  if (x.x() >= 0.0 && x.y() >= 0.0) return x;
+  x = Vec2(-b.x() / K(0, 0), 0.0);
+  if (x.x() >= 0.0 && K(1, 0) * x.x() + b.y() >= 0.0) return x;
+  x = Vec2(0.0, -b.y() / K(1, 1));
+  if (x.y() >= 0.0 && K(0, 1) * x.y() + b.x() >= 0.0) return x;
+  if (b.x() >= 0.0 && b.y() >= 0.0) return Vec2::Zero();
+  return old;
+}
+
 Vec2 rotate(const Vec2& q, const Vec2& r) {  // R(Theta) r with q = (cos Theta, sin Theta)
   return {q.x() * r.x() - q.y() * r.y(), q.y() * r.x() + q.x() * r.y()};
 }
@@ -136,6 +152,9 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
     c.normal = src.normal;
     c.friction = src.friction;
     c.slop = src.slop;
+    c.use_block = src.use_block;
+    c.K = src.K;
+    c.block_mass = src.normal_mass;
     const double h =
         src.b >= 0 ? std::max(intervals[src.a], intervals[src.b]) : intervals[src.a];  // [s]
     const double h_s = h / config_.substeps;                                           // [s]
@@ -205,7 +224,30 @@ void SoftStep::solve_contact(Contact& c, bool bias) {
   const double iia = inverse_inertia_[c.a], iib = inverse_inertia_[c.b];
   const Vec2 dp = shift_[c.a] - shift_[c.b];
   const Vec2 qa = rotation_[c.a], qb = rotation_[c.b];
-  for (int p = 0; p < c.count; ++p) {
+  // The relax of two points at once: v_n to 0, or to -s/h_s at a gap.
+  const int single = !bias && c.use_block ? 0 : c.count;  // points solved one by one
+  if (single == 0) {
+    Point &p1 = c.points[0], &p2 = c.points[1];
+    Vec2 target, vn;
+    for (int p = 0; p < 2; ++p) {
+      const Point& q = c.points[static_cast<std::size_t>(p)];
+      const double s =
+          q.base_separation + c.normal.dot(dp + rotate(qa, q.r_a) - rotate(qb, q.r_b));  // (S-1)
+      target[p] = s > 0.0 ? -s * c.inverse_substep : 0.0;
+      vn[p] = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);
+    }
+    const Vec2 old(p1.normal_impulse, p2.normal_impulse);
+    const Vec2 x = solve_block(c.K, c.block_mass, vn, target, old);
+    for (int p = 0; p < 2; ++p) {
+      Point& q = c.points[static_cast<std::size_t>(p)];
+      const Vec2 P = (x[p] - old[p]) * c.normal;
+      q.normal_impulse = x[p];
+      q.largest_normal = std::max(q.largest_normal, x[p]);
+      va += ima * P, wa += iia * cross(q.r_a, P);
+      vb -= imb * P, wb -= iib * cross(q.r_b, P);
+    }
+  }
+  for (int p = 0; p < single; ++p) {
     Point& q = c.points[static_cast<std::size_t>(p)];
     const double s =
         q.base_separation + c.normal.dot(dp + rotate(qa, q.r_a) - rotate(qb, q.r_b));  // (S-1)
@@ -249,13 +291,35 @@ double SoftStep::restitute(Contact& c) {
   double wa = spin_[c.a], wb = spin_[c.b];
   const Vec2 dp = shift_[c.a] - shift_[c.b];
   double worst = 0.0;  // [m]
+  auto struck = [&](const Point& q) {
+    return !q.resting && q.approach < -config_.restitution_threshold && q.largest_normal > 0.0;
+  };
+  // Two points struck together are restituted at once (one after the other, the second would
+  // undo part of the first: a log meeting another end to end would leave spinning).
+  const bool block = c.use_block && struck(c.points[0]) && struck(c.points[1]);
+  if (block) {
+    Vec2 target, vn, old;
+    for (int p = 0; p < 2; ++p) {
+      const Point& q = c.points[static_cast<std::size_t>(p)];
+      target[p] = -config_.restitution * q.approach;  // v* = -e v_n^0 (M-9)
+      vn[p] = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);
+      old[p] = q.total_normal;
+    }
+    const Vec2 x = solve_block(c.K, c.block_mass, vn, target, old);
+    for (int p = 0; p < 2; ++p) {
+      Point& q = c.points[static_cast<std::size_t>(p)];
+      const Vec2 P = (x[p] - old[p]) * c.normal;
+      q.total_normal = x[p];
+      va += inverse_mass_[c.a] * P, wa += inverse_inertia_[c.a] * cross(q.r_a, P);
+      vb -= inverse_mass_[c.b] * P, wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
+    }
+  }
   for (int p = 0; p < c.count; ++p) {
     Point& q = c.points[static_cast<std::size_t>(p)];
     const double s = q.base_separation + c.normal.dot(dp + rotate(rotation_[c.a], q.r_a) -
                                                       rotate(rotation_[c.b], q.r_b));
     worst = std::max(worst, -s);
-    if (q.resting || q.approach >= -config_.restitution_threshold || q.largest_normal <= 0.0)
-      continue;
+    if (block || !struck(q)) continue;
     const double vn = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);  // [m/s]
     const double total =
         std::max(q.total_normal - q.normal_mass * (vn + config_.restitution * q.approach), 0.0);

@@ -73,10 +73,12 @@ class SoftStep final : public ContactSolver {
     int a = 0, b = 0;  // body slots; a wall is the slot after the last body
     int count = 0;
     Vec2 normal = Vec2::UnitX();
-    double friction = 0.0, slop = 0.0;             // mu_c [-], [m]
-    double inverse_substep = 0.0;                  // 1 / h_s [1/s]
-    double bias_rate = 0.0;                        // b [1/s]
-    double mass_scale = 1.0, impulse_scale = 0.0;  // a/(1+a), 1/(1+a) [-]
+    double friction = 0.0, slop = 0.0;                 // mu_c [-], [m]
+    double inverse_substep = 0.0;                      // 1 / h_s [1/s]
+    double bias_rate = 0.0;                            // b [1/s]
+    double mass_scale = 1.0, impulse_scale = 0.0;      // a/(1+a), 1/(1+a) [-]
+    bool use_block = false;                            // two points relaxed and restituted at once
+    Mat2 K = Mat2::Zero(), block_mass = Mat2::Zero();  // [1/kg], K^-1 [kg]
     std::array<Point, 2> points;
   };
 
