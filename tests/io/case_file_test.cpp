@@ -992,10 +992,10 @@ namespace {
 // bodies.contact.solver (docs/case-format.md): the soft step and its settings; each solver's own
 // settings are refused with the other.
 TEST(CaseFile, TheContactSolverAndItsOwnSettingsAreRead) {
-  const Case c = parse_case(
-      appended("bodies:\n  contact: {solver: soft_step, substeps: 6, contact_hertz: 20, "
-               "damping_ratio: 5}\n"),
-      "case.yaml");
+  const Case c =
+      parse_case(appended("bodies:\n  contact: {solver: soft_step, substeps: 6, contact_hertz: 20, "
+                          "damping_ratio: 5}\n"),
+                 "case.yaml");
   EXPECT_EQ(c.bodies.contact.solver, ContactSolverKind::soft_step);
   EXPECT_EQ(c.bodies.contact.substeps, 6);
   EXPECT_EQ(c.bodies.contact.contact_hertz, 20.0);
