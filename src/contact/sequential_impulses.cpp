@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "contact/soft_step.hpp"
-
 namespace flotsam {
 namespace {
 
@@ -14,11 +12,6 @@ bool in_parallel(const std::vector<ContactConstraint>& contacts, const Islands& 
 }
 
 }  // namespace
-
-std::unique_ptr<ContactSolver> make_contact_solver(const ContactConfig& config) {
-  if (config.solver == ContactSolverKind::soft_step) return std::make_unique<SoftStep>(config);
-  return std::make_unique<SequentialImpulses>(config);
-}
 
 // The interval that brought the bodies here moved them with their velocities before the
 // contacts acted; the impulses belong to the same interval, so the poses are moved on by h times
