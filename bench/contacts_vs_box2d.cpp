@@ -1,22 +1,26 @@
-// flotsam's contact stage and Box2D 2.4 (Debian's libbox2d-dev) side by side on one scene (issue
-// 18, item 1): the packed jam of bench_contacts (src/contact/jam_scene.hpp: logs 10 m x 0.5 m in
-// rows against a line of circular piers in a walled channel, about 50 logs per gap), pushed
-// downstream by a force of 0.2 m/s^2 per unit mass standing in for the drag, N = 1k, 10k, 50k.
-// Both engines step the same 0.02 s steps from the same poses: flotsam moves the logs under the
-// push and runs its contact stage (ContactWorld::step); Box2D steps its world (8 velocity and 3
-// position iterations, its defaults; sleeping on). After the warm-up and the timed steps, the
-// poses of both are measured with flotsam's narrow phase: the largest and the 99th-percentile
-// overlap between bodies and into walls, and the logs whose centre is past the piers (must be 0).
+// flotsam's contact stage, with each of its solvers (sequential impulses, soft step), and Box2D
+// 2.4 (Debian's libbox2d-dev) side by side on one scene (issue 18, item 1): the packed jam of
+// bench_contacts (src/contact/jam_scene.hpp: logs 10 m x 0.5 m in rows against a line of circular
+// piers in a walled channel, about 50 logs per gap), pushed downstream by a force of 0.2 m/s^2 per
+// unit mass standing in for the drag, N = 1k, 10k, 50k. Both engines step the same 0.02 s steps
+// from the same poses: flotsam moves the logs under the push and runs its contact stage
+// (ContactWorld::step); Box2D steps its world (8 velocity and 3 position iterations, its defaults;
+// sleeping on). After the warm-up and the timed steps, the poses of both are measured with
+// flotsam's narrow phase: the largest and the 99th-percentile overlap between bodies and into
+// walls, and the logs whose centre is past the piers (must be 0).
 //
 //   cmake --build <build> --target bench_contacts_vs_box2d
-//   <build>/bench/bench_contacts_vs_box2d            # about 3 minutes; figures: performance.md
+//   <build>/bench/bench_contacts_vs_box2d      # about 10 minutes idle; figures: performance.md
+//   <build>/bench/bench_contacts_vs_box2d 10000 --no-sequential
 #include <box2d/box2d.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "contact/contact_world.hpp"
@@ -26,13 +30,17 @@ namespace flotsam {
 namespace {
 
 struct Result {
-  double ms_per_step = 0.0;    // [ms] wall time of one step
-  double largest = 0.0;        // [m] largest overlap, bodies and walls
-  double percentile_99 = 0.0;  // [m] 99th percentile of the overlaps of the contact points
-  int past_piers = 0;          // logs whose centre is downstream of the piers' line
-  double sweeps = 0.0;         // flotsam: mean velocity sweeps per step (its cap: 200)
-  double second_solves = 0.0;  // flotsam: share of the steps solved twice (docs/model.md)
-  double islands = 0.0;        // flotsam: islands per step (contact/islands.hpp)
+  double ms_per_step = 0.0;      // [ms] wall time of one step
+  double cpu_ms_per_step = 0.0;  // [ms] CPU time of the process per step (all its threads)
+  double largest = 0.0;          // [m] largest overlap, bodies and walls
+  double percentile_99 = 0.0;    // [m] 99th percentile of the overlaps of the contact points
+  int past_piers = 0;            // logs whose centre is downstream of the piers' line
+  double sweeps = 0.0;           // flotsam: mean velocity sweeps per step (its cap: 200)
+  double second_solves = 0.0;    // flotsam: share of the steps solved twice (docs/model.md)
+  double islands = 0.0;          // flotsam: islands per step (contact/islands.hpp)
+  double detect_ms = 0.0;        // flotsam: boxes, broad and narrow phase per step [ms]
+  double solve_ms = 0.0;         // flotsam: the solver per step [ms]
+  double positions_ms = 0.0;     // flotsam: the position stage per step [ms]
 };
 
 // Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
@@ -60,23 +68,41 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-Result run_flotsam(JamScene scene, int warm_up, int timed) {
-  ContactWorld world(jam_contact_config());
+// [s] of CPU used by the process: on a loaded machine, read with one thread, it is the fairer
+// measure of the work (the wall time includes the time the process waited for a core).
+double cpu_seconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
+
+Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind solver) {
+  ContactConfig config = jam_contact_config();
+  config.solver = solver;
+  ContactWorld world(config);
   for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
   double sweeps = 0.0, second_solves = 0.0, islands = 0.0;
+  double detect = 0.0, solve = 0.0, positions = 0.0;  // [s] of the last solve of each step
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   for (int k = 0; k < timed; ++k) {
     world.step(scene.bodies, scene.walls, move_jam_logs(scene));
     sweeps += world.profile().velocity_sweeps;
     second_solves += world.profile().second_solves;
     islands += world.profile().islands;
+    const ContactProfile& p = world.profile();
+    detect += p.boxes + p.broad_phase + p.narrow_phase;
+    solve += p.solve;
+    positions += p.positions;
   }
-  const double seconds = seconds_since(start);
+  const double seconds = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   Result r = measure(scene);
   r.ms_per_step = 1e3 * seconds / timed;
+  r.cpu_ms_per_step = 1e3 * cpu / timed;
   r.sweeps = sweeps / timed;
   r.second_solves = second_solves / timed;
   r.islands = islands / timed;
+  r.detect_ms = 1e3 * detect / timed;
+  r.solve_ms = 1e3 * solve / timed;
+  r.positions_ms = 1e3 * positions / timed;
   return r;
 }
 
@@ -129,42 +155,65 @@ Result run_box2d(JamScene scene, int warm_up, int timed) {
   };
   for (int k = 0; k < warm_up; ++k) step();
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   for (int k = 0; k < timed; ++k) step();
-  const double seconds = seconds_since(start);
+  const double seconds = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   for (int i = 0; i < b.size(); ++i) {
     b.position[i] = {logs[i]->GetPosition().x, logs[i]->GetPosition().y};
     b.angle[i] = logs[i]->GetAngle();
   }
   Result r = measure(scene);
   r.ms_per_step = 1e3 * seconds / timed;
+  r.cpu_ms_per_step = 1e3 * cpu / timed;
   return r;
 }
 
 }  // namespace
 }  // namespace flotsam
 
-int main() {
+// Arguments: the log counts (default 1000 10000 50000); `--no-sequential` leaves out flotsam's
+// sequential impulses (minutes at 50k).
+int main(int argc, char** argv) {
   using namespace flotsam;
-  std::printf("%7s %-8s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "largest [mm]",
-              "p99 [mm]", "past piers");
-  for (const int n : {1000, 10000, 50000}) {
+  std::vector<int> counts;
+  bool sequential = true;
+  for (int k = 1; k < argc; ++k) {
+    if (std::string(argv[k]) == "--no-sequential") {
+      sequential = false;
+    } else {
+      counts.push_back(std::stoi(argv[k]));
+    }
+  }
+  if (counts.empty()) counts = {1000, 10000, 50000};
+  std::printf("%7s %-8s %12s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "cpu ms/step",
+              "largest [mm]", "p99 [mm]", "past piers");
+  for (const int n : counts) {
     JamSceneSpec spec;
     spec.log_count = n;
     spec.pier_count = std::max(2, n / 50 + 1);
     spec.row_gap = 0.0;
     const JamScene scene = make_jam_scene(spec);
     const int warm_up = 100, timed = n >= 50000 ? 20 : 50;  // steps of 0.02 s
-    const Result f = run_flotsam(scene, warm_up, timed);
     const Result b = run_box2d(scene, warm_up, timed);
-    for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"box2d", b}}) {
-      std::printf("%7d %-8s %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step, 1e3 * r.largest,
-                  1e3 * r.percentile_99, r.past_piers);
+    const Result f =
+        sequential ? run_flotsam(scene, warm_up, timed, ContactSolverKind::sequential_impulses)
+                   : Result{};
+    const Result s = run_flotsam(scene, warm_up, timed, ContactSolverKind::soft_step);
+    for (const auto& [name, r] :
+         {std::pair{"box2d", b}, std::pair{"flotsam", f}, std::pair{"soft", s}}) {
+      std::printf("%7d %-8s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
+                  r.cpu_ms_per_step, 1e3 * r.largest, 1e3 * r.percentile_99, r.past_piers);
     }
-    std::printf(
-        "%7d %-8s %12.2f %14.2f %14.2f   (flotsam: %.0f islands, %.0f velocity sweeps per step, "
-        "%.0f %% of steps solved twice)\n",
-        n, "ratio", f.ms_per_step / b.ms_per_step, f.largest / b.largest,
-        f.percentile_99 / b.percentile_99, f.islands, f.sweeps, 100.0 * f.second_solves);
+    for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"soft", s}}) {
+      std::printf(
+          "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f velocity sweeps per "
+          "step, %.0f %% of steps solved twice; last solve per step: detection %.2f ms, solver "
+          "%.2f ms, positions %.2f ms)\n",
+          n, name, r.ms_per_step / b.ms_per_step, r.cpu_ms_per_step / b.cpu_ms_per_step,
+          r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sweeps,
+          100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms);
+    }
+    std::fflush(stdout);
   }
   return 0;
 }

@@ -55,7 +55,10 @@ Rectangle body_rectangle(const BodySet& bodies, int i) {
 }
 
 ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coefficient)
-    : config_(config), added_mass_coefficient_(added_mass_coefficient) {}
+    : config_(config),
+      added_mass_coefficient_(added_mass_coefficient),
+      solver_(make_contact_solver(config)),
+      margin_(solver_->margin_in_slops()) {}
 
 // The solve moves each body on by h times its change of velocity. Detection only saw the gaps
 // within its margin (2 slop), so a body pushed further than that by a neighbour (a log struck
@@ -73,10 +76,11 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
     lengths_.assign(static_cast<std::size_t>(bodies.size()), interval);
   }
   reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
+  find_interval_start(bodies, members);
   detect(bodies, walls, members);
   solve(bodies);
   if (grow_reach(bodies)) {
-    undo_solve(bodies);
+    solver_->undo(bodies);
     contacts_ = previous_;  // the last interval's contacts again, for the warm start
     contacts_.insert(contacts_.end(), others_.begin(), others_.end());
     detect(bodies, walls, members);
@@ -88,6 +92,34 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
   correct_positions(bodies);
   contacts_.insert(contacts_.end(), others_.begin(), others_.end());
   others_.clear();
+  for (int i = 0; i < bodies.size(); ++i) {
+    if (!active_[i]) continue;
+    after_.linear[i] = bodies.velocity[i];
+    after_.angular[i] = bodies.angular_velocity[i];
+    after_known_[i] = 1;
+  }
+}
+
+// The velocities the bodies of this step had at the start of the interval: those this world
+// left them with at the end of their last interval, when they were in it (the body step has
+// since added the forces' change); else the present ones (as if the forces acted at the start).
+void ContactWorld::find_interval_start(const BodySet& bodies, const std::vector<int>* members) {
+  const auto n = static_cast<std::size_t>(bodies.size());
+  after_.linear.resize(n, Vec2::Zero());
+  after_.angular.resize(n, 0.0);
+  after_known_.resize(n, 0);
+  interval_start_.linear = bodies.velocity;
+  interval_start_.angular = bodies.angular_velocity;
+  auto take = [&](int i) {
+    if (!after_known_[i]) return;
+    interval_start_.linear[i] = after_.linear[i];
+    interval_start_.angular[i] = after_.angular[i];
+  };
+  if (members) {
+    for (const int i : *members) take(i);
+  } else {
+    for (int i = 0; i < bodies.size(); ++i) take(i);
+  }
 }
 
 // reach_i = how far the solve moved body i's farthest point, h (|du| + |d omega| R), where it is
@@ -100,18 +132,10 @@ bool ContactWorld::grow_reach(const BodySet& bodies) {
     const double moved =
         lengths_[i] * ((bodies.velocity[i] - velocity_before_[i]).norm() +
                        std::abs(bodies.angular_velocity[i] - angular_velocity_before_[i]) * R);
-    if (moved > 2.0 * config_.allowed_overlap * bodies.width[i]) reach_[i] = moved, grown = true;
+    if (moved > margin_ * config_.allowed_overlap * bodies.width[i])
+      reach_[i] = moved, grown = true;
   }
   return grown;
-}
-
-void ContactWorld::undo_solve(BodySet& bodies) {
-  for (int i = 0; i < bodies.size(); ++i) {
-    bodies.position[i] -= lengths_[i] * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] -= lengths_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
-    bodies.velocity[i] = velocity_before_[i];
-    bodies.angular_velocity[i] = angular_velocity_before_[i];
-  }
 }
 
 ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments& walls,
@@ -119,6 +143,8 @@ ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments
   ContactSchedule schedule = planner_.plan(bodies, walls, dt, config_);
   std::vector<char> free(static_cast<std::size_t>(bodies.size()), 0);
   for (const int i : schedule.free) free[i] = 1;
+  after_known_.resize(free.size(), 0);
+  for (const int i : schedule.free) after_known_[i] = 0;  // its next interval starts unknown
   std::erase_if(contacts_,
                 [&](const ContactConstraint& c) { return free[c.a] || (c.b >= 0 && free[c.b]); });
   return schedule;
@@ -149,7 +175,7 @@ void ContactWorld::update_boxes(const BodySet& bodies, const std::vector<int>* m
     active_[i] = active_[i] && bodies.state[i] != BodyState::gone;
     if (!active_[i]) continue;
     const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
-    const double grow = 2.0 * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
+    const double grow = margin_ * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
                       std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y() + grow);
     boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
@@ -196,21 +222,44 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
       p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
     }
   };
-  for (const auto& [i, j] : body_pairs_) {
+  // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
+  // contacts on any number of threads. Each footprint is built once (one cos, sin per body).
+  rectangles_.resize(boxes_.size());
+  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i)
+    if (active_[i]) rectangles_[i] = body_rectangle(bodies, i);
+  constexpr std::size_t parallel_pairs = 2000;  // [-] threads pay off from a few thousand
+  const int body_pairs = static_cast<int>(body_pairs_.size());
+  const int wall_pairs = static_cast<int>(wall_pairs_.size());
+  manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
+#pragma omp parallel for schedule(static) if (manifolds_.size() >= parallel_pairs)
+  for (int k = 0; k < body_pairs + wall_pairs; ++k) {
+    if (k < body_pairs) {
+      const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
+      const double slop = config_.allowed_overlap * std::min(bodies.width[i], bodies.width[j]);
+      manifolds_[k] = collide_rectangles(rectangles_[i], rectangles_[j],
+                                         margin_ * slop + reach_[i] + reach_[j], 0.1 * slop);
+    } else {
+      const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k - body_pairs)];
+      const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
+      manifolds_[k] =
+          collide_rectangle_segment(rectangles_[i], walls.start[s], walls.end[s], walls.normal[s],
+                                    margin_ * slop + reach_[i], 0.1 * slop);
+    }
+  }
+  for (int k = 0; k < body_pairs; ++k) {
+    const Manifold& m = manifolds_[static_cast<std::size_t>(k)];
+    if (m.point_count == 0) continue;
+    const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
     const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
     const double slop = config_.allowed_overlap * width;              // [m]
-    const Manifold m = collide_rectangles(body_rectangle(bodies, i), body_rectangle(bodies, j),
-                                          2.0 * slop + reach_[i] + reach_[j], 0.1 * slop);
-    if (m.point_count == 0) continue;
     contacts_.push_back(make_constraint(m, i, j, -1, config_.friction, slop, width));
     relative(contacts_.back());
   }
-  for (const auto& [i, s] : wall_pairs_) {
-    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
-    const Manifold m =
-        collide_rectangle_segment(body_rectangle(bodies, i), walls.start[s], walls.end[s],
-                                  walls.normal[s], 2.0 * slop + reach_[i], 0.1 * slop);
+  for (int k = 0; k < wall_pairs; ++k) {
+    const Manifold& m = manifolds_[static_cast<std::size_t>(body_pairs + k)];
     if (m.point_count == 0) continue;
+    const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k)];
+    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
     contacts_.push_back(make_constraint(m, i, -1, s, config_.friction, slop, bodies.width[i]));
     relative(contacts_.back());
   }
@@ -227,14 +276,18 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
 // resting: restitution is not applied to it again.
 void ContactWorld::match_previous_points() {
   auto key = [](const ContactConstraint& c) { return std::tuple(c.a, c.b, c.segment); };
-  std::sort(previous_.begin(), previous_.end(),
-            [&](const auto& x, const auto& y) { return key(x) < key(y); });
+  using Key = decltype(key(ContactConstraint{}));
+  previous_keys_.clear();  // sorted (key, index): the contacts themselves are large to move
+  for (std::size_t m = 0; m < previous_.size(); ++m)
+    previous_keys_.emplace_back(key(previous_[m]), static_cast<int>(m));
+  std::sort(previous_keys_.begin(), previous_keys_.end());
   profile_.points = profile_.warm_started_points = 0;
   for (ContactConstraint& c : contacts_) {
     profile_.points += c.point_count;
-    const auto it = std::lower_bound(previous_.begin(), previous_.end(), key(c),
-                                     [&](const auto& x, const auto& k) { return key(x) < k; });
-    if (it == previous_.end() || key(*it) != key(c)) continue;
+    const auto found = std::lower_bound(previous_keys_.begin(), previous_keys_.end(), key(c),
+                                        [](const auto& x, const Key& k) { return x.first < k; });
+    if (found == previous_keys_.end() || found->first != key(c)) continue;
+    const ContactConstraint* it = &previous_[static_cast<std::size_t>(found->second)];
     std::array<bool, 2> used{false, false};
     std::array<int, 2> match{-1, -1};
     for (int k = 0; k < c.point_count; ++k) {
@@ -260,19 +313,15 @@ void ContactWorld::match_previous_points() {
       const ContactPointConstraint& old = it->points[match[k]];
       p.normal_impulse = old.normal_impulse;
       p.tangent_impulse = old.tangent_impulse;
+      p.first_impulse = old.first_impulse;
+      p.last_impulse = old.last_impulse;
       p.resting = old.normal_impulse > 0.0;
       ++profile_.warm_started_points;
     }
   }
 }
 
-// The interval that brought the bodies here moved them with their velocities before the
-// contacts acted; the impulses belong to the same interval, so the poses are moved on by h times
-// the change of velocity (x_n+1 = x_n + h u_n+1, semi-implicit Euler). A resting jam pushed by a
-// steady force then does not creep into its supports by F h^2 / m per interval. h must be the
-// interval the bodies have just been moved over, not a longer step: the move would otherwise
-// be too long by the ratio (and a bounce could carry a body through a wall).
-// Each island is solved on its own, the islands in parallel (contact/islands.hpp).
+// The solver (contact_solver.hpp) changes the velocities and moves the poses over the interval.
 void ContactWorld::solve(BodySet& bodies) {
   Stopwatch clock;
   masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
@@ -283,42 +332,15 @@ void ContactWorld::solve(BodySet& bodies) {
   profile_.largest_island = islands_.largest();
   velocity_before_ = bodies.velocity;
   angular_velocity_before_ = bodies.angular_velocity;
-  const std::vector<int>& order = islands_.largest_first();
-  const int count = islands_.count();
-  int sweeps = 0;
-#pragma omp parallel for schedule(dynamic) reduction(max : sweeps) if (in_parallel())
-  for (int k = 0; k < count; ++k) {
-    const std::span<ContactConstraint> island = islands_.island(contacts_, order[k]);
-    warm_start_contacts(island, bodies, masses_);
-    sweeps = std::max(sweeps, solve_contact_velocities(island, bodies, masses_, config_));
-  }
-  profile_.velocity_sweeps = sweeps;
-  for (int i = 0; i < bodies.size(); ++i) {
-    bodies.position[i] += lengths_[i] * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] += lengths_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
-  }
+  profile_.velocity_sweeps =
+      solver_->solve(contacts_, islands_, bodies, masses_, lengths_, interval_start_);
   profile_.solve = clock.lap();
 }
 
-// Each island stops its sweeps once its own overlaps are within the slop.
 void ContactWorld::correct_positions(BodySet& bodies) {
   Stopwatch clock;
-  const std::vector<int>& order = islands_.largest_first();
-  const int count = islands_.count();
-  double worst = 0.0;  // [m]
-#pragma omp parallel for schedule(dynamic) reduction(max : worst) if (in_parallel())
-  for (int k = 0; k < count; ++k) {
-    worst = std::max(worst, correct_contact_positions(islands_.island(contacts_, order[k]), bodies,
-                                                      masses_, config_));
-  }
-  profile_.largest_overlap = worst;
+  profile_.largest_overlap = solver_->correct_positions(contacts_, islands_, bodies, masses_);
   profile_.positions = clock.lap();
-}
-
-// Threads pay off from a few hundred contacts (a parallel region costs a few microseconds).
-bool ContactWorld::in_parallel() const {
-  constexpr std::size_t parallel_contacts = 256;  // [-]
-  return contacts_.size() >= parallel_contacts && islands_.count() > 1;
 }
 
 ContactReport ContactWorld::report(const BoundarySegments& walls, int body_count) const {

@@ -9,12 +9,16 @@
 // each stage timed into ContactProfile, as Box2D's b2World_Step. The world keeps what makes the
 // next step cheap: the sweep order, and last step's impulses to warm-start the solver.
 // Bodies whose state is `gone` take no part.
+#include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bodies/body_set.hpp"
 #include "contact/boundary_segments.hpp"
 #include "contact/contact_planner.hpp"
 #include "contact/contact_report.hpp"
+#include "contact/contact_solver.hpp"
 #include "contact/impulse_solver.hpp"
 #include "contact/islands.hpp"
 #include "contact/sweep_and_prune.hpp"
@@ -80,37 +84,45 @@ class ContactWorld {
                int sweep_axis) {
     contacts_ = std::move(contacts);
     sweep_.restore(std::move(sweep_order), sweep_axis);
+    after_known_.clear();
   }
   const ContactConfig& config() const { return config_; }
 
  private:
   void update_boxes(const BodySet& bodies, const std::vector<int>* members);
   void find_pairs(const BoundarySegments& walls);
+  void find_interval_start(const BodySet& bodies, const std::vector<int>* members);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
   void match_previous_points();
   void solve(BodySet& bodies);
   bool grow_reach(const BodySet& bodies);
-  void undo_solve(BodySet& bodies);
   void correct_positions(BodySet& bodies);
-  bool in_parallel() const;
 
   ContactConfig config_;
   double added_mass_coefficient_;  // C_a [-], used when config_.added_mass_in_contact
   BroadPhase broad_phase_ = BroadPhase::sweep_and_prune;
   SweepAndPrune sweep_;
   std::vector<Aabb> boxes_;
+  std::vector<Rectangle> rectangles_;  // footprints of this detection
+  std::vector<Manifold> manifolds_;    // of the body pairs, then of the wall pairs
   std::vector<char> active_;
   std::vector<BodyPair> body_pairs_;
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
+  std::vector<std::pair<std::tuple<int, int, int>, int>> previous_keys_;  // (a, b, segment), index
   std::vector<ContactConstraint> others_;  // contacts of the bodies outside this step's group
   ContactPlanner planner_;
+  std::unique_ptr<ContactSolver> solver_;  // by config_.solver
+  double margin_;  // detection margin in slops (ContactSolver::margin_in_slops)
   SolverMasses masses_;
   Islands islands_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
-  std::vector<double> reach_;    // [m] per body, added to its detection margin (see step())
-  std::vector<double> lengths_;  // h per body [s]
+  BodyVelocities after_;           // each body's velocities at the end of its last step here
+  std::vector<char> after_known_;  // 1 while after_ holds the start of the body's next interval
+  BodyVelocities interval_start_;  // this step's bodies at the start of their interval
+  std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
+  std::vector<double> lengths_;    // h per body [s]
   std::vector<int> found_, stamp_;
   int stamp_value_ = 0;
   ContactProfile profile_;

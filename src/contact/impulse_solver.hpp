@@ -48,7 +48,10 @@ struct ContactPointConstraint {
   double approach_velocity = 0.0;               // v_n before the solve [m/s]
   double target_velocity = 0.0;                 // v* [m/s]
   double separation = 0.0;                      // s at detection [m]
-  Vec2 local_incident = Vec2::Zero();           // incident point, incident body frame [m]
+  // Soft step (soft_step.hpp): the (normal, tangential) impulse of its first and of its last
+  // sub-step [N s], to warm-start the same sub-steps of the next interval.
+  Vec2 first_impulse = Vec2::Zero(), last_impulse = Vec2::Zero();
+  Vec2 local_incident = Vec2::Zero();  // incident point, incident body frame [m]
   int feature = 0;
   bool resting = false;  // matched to a point of the last interval that carried an impulse
 };

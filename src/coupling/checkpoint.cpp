@@ -34,12 +34,12 @@ namespace flotsam {
 template <>
 struct archive_fields<ContactPointConstraint> {
   using C = ContactPointConstraint;
-  static constexpr auto fields =
-      std::make_tuple(&C::r_a, &C::r_b, &C::normal_mass, &C::tangent_mass, &C::normal_impulse,
-                      &C::tangent_impulse, &C::approach_velocity, &C::target_velocity,
-                      &C::separation, &C::local_incident, &C::feature, &C::resting);
+  static constexpr auto fields = std::make_tuple(
+      &C::r_a, &C::r_b, &C::normal_mass, &C::tangent_mass, &C::normal_impulse, &C::tangent_impulse,
+      &C::approach_velocity, &C::target_velocity, &C::separation, &C::first_impulse,
+      &C::last_impulse, &C::local_incident, &C::feature, &C::resting);
 };
-static_assert(sizeof(ContactPointConstraint) == 128, "list the new member in archive_fields");
+static_assert(sizeof(ContactPointConstraint) == 160, "list the new member in archive_fields");
 
 template <>
 struct archive_fields<ContactConstraint> {
@@ -48,7 +48,7 @@ struct archive_fields<ContactConstraint> {
       std::make_tuple(&C::a, &C::b, &C::segment, &C::normal, &C::point_count, &C::points,
                       &C::friction, &C::slop, &C::width, &C::use_block, &C::K, &C::normal_mass,
                       &C::reference_on_a, &C::local_normal, &C::local_plane_point);
-  static_assert(sizeof(ContactConstraint) == 448, "list the new member in archive_fields");
+  static_assert(sizeof(ContactConstraint) == 512, "list the new member in archive_fields");
 };
 
 template <>

@@ -179,7 +179,12 @@ struct BodyPhysics {
   double rk_tolerance = 1e-6;           // RKF45 tolerance on the weighted error norm [-]
 };
 
+/// The contact solver (docs/model.md "Contacts"): Box2D v2.4's sequential impulses with a
+/// position stage, or Box2D v3's soft step (sub-steps with soft contacts).
+enum class ContactSolverKind { sequential_impulses, soft_step };
+
 struct ContactConfig {
+  ContactSolverKind solver = ContactSolverKind::sequential_impulses;
   double restitution = 1.0;  // e [-] (M-9); the paper's case uses 1
   double friction = 0.5;     // mu_c [-]
   bool added_mass_in_contact = false;
@@ -189,6 +194,10 @@ struct ContactConfig {
   double velocity_tolerance = 1e-6;     // [m/s] sweeps stop when no point's velocity changes more
   int position_iterations = 10;         // position-correction sweeps (at most)
   double allowed_overlap = 0.005;  // [-] overlap left uncorrected, fraction of the thinner width
+  // Soft step only (src/contact/soft_step.hpp).
+  int substeps = 4;             // sub-steps per contact interval
+  double contact_hertz = 30.0;  // [Hz] stiffness of a soft contact, as a natural frequency
+  double damping_ratio = 10.0;  // zeta [-] of a soft contact
 };
 
 /// Bodies released from a line or a zone (spec 5), at a rate over [start_time, end_time] or

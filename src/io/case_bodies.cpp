@@ -42,18 +42,38 @@ BodyPhysics read_physics(const YamlMap& m) {
   return p;
 }
 
+// Each solver's own settings are refused with the other (docs/case-format.md).
 ContactConfig read_contact(const YamlMap& m) {
   ContactConfig c;
+  if (const auto solver = m.find("solver")) {
+    c.solver = solver->choice<ContactSolverKind>(
+        {{"sequential_impulses", ContactSolverKind::sequential_impulses},
+         {"soft_step", ContactSolverKind::soft_step}});
+  }
   c.restitution = m.number("restitution", c.restitution, Range::between(0.0, 1.0));
   c.friction = m.number("friction", c.friction, Range::non_negative());
   c.added_mass_in_contact = m.boolean("added_mass_in_contact", c.added_mass_in_contact);
-  c.iterations = static_cast<int>(m.integer("iterations", c.iterations, Range::between(1, 1e6)));
   c.restitution_threshold =
       m.number("restitution_threshold", c.restitution_threshold, Range::non_negative());
-  c.velocity_tolerance = m.number("velocity_tolerance", c.velocity_tolerance, Range::positive());
-  c.position_iterations = static_cast<int>(
-      m.integer("position_iterations", c.position_iterations, Range::between(0, 1e6)));
   c.allowed_overlap = m.number("allowed_overlap", c.allowed_overlap, Range{0.0, 1.0, false, true});
+  if (c.solver == ContactSolverKind::soft_step) {
+    constexpr std::string_view why = "only used with solver 'sequential_impulses'";
+    m.forbid("iterations", why);
+    m.forbid("velocity_tolerance", why);
+    m.forbid("position_iterations", why);
+    c.substeps = static_cast<int>(m.integer("substeps", c.substeps, Range::between(1, 64)));
+    c.contact_hertz = m.number("contact_hertz", c.contact_hertz, Range::positive());
+    c.damping_ratio = m.number("damping_ratio", c.damping_ratio, Range::non_negative());
+  } else {
+    constexpr std::string_view why = "only used with solver 'soft_step'";
+    m.forbid("substeps", why);
+    m.forbid("contact_hertz", why);
+    m.forbid("damping_ratio", why);
+    c.iterations = static_cast<int>(m.integer("iterations", c.iterations, Range::between(1, 1e6)));
+    c.velocity_tolerance = m.number("velocity_tolerance", c.velocity_tolerance, Range::positive());
+    c.position_iterations = static_cast<int>(
+        m.integer("position_iterations", c.position_iterations, Range::between(0, 1e6)));
+  }
   return c;
 }
 

@@ -985,3 +985,29 @@ TEST(CaseAgainstMesh, MeshGroupWithoutConditionIsNamed) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// bodies.contact.solver (docs/case-format.md): the soft step and its settings; each solver's own
+// settings are refused with the other.
+TEST(CaseFile, TheContactSolverAndItsOwnSettingsAreRead) {
+  const Case c =
+      parse_case(appended("bodies:\n  contact: {solver: soft_step, substeps: 6, contact_hertz: 20, "
+                          "damping_ratio: 5}\n"),
+                 "case.yaml");
+  EXPECT_EQ(c.bodies.contact.solver, ContactSolverKind::soft_step);
+  EXPECT_EQ(c.bodies.contact.substeps, 6);
+  EXPECT_EQ(c.bodies.contact.contact_hertz, 20.0);
+  EXPECT_EQ(c.bodies.contact.damping_ratio, 5.0);
+  EXPECT_EQ(parse_case(base_case, "case.yaml").bodies.contact.solver,
+            ContactSolverKind::sequential_impulses);
+  EXPECT_THAT(error_of(appended("bodies:\n  contact: {solver: soft_step, iterations: 8}\n")),
+              HasSubstr("iterations: not allowed here: only used with solver "
+                        "'sequential_impulses'"));
+  EXPECT_THAT(error_of(appended("bodies:\n  contact: {substeps: 8}\n")),
+              HasSubstr("substeps: not allowed here: only used with solver 'soft_step'"));
+}
+
+}  // namespace
+}  // namespace flotsam

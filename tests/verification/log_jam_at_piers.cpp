@@ -30,3 +30,18 @@ TEST(LogJamAtPiers, FiftyLogsComeToRestAgainstTwoPiersAndStay) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// The same jam with the soft step (`solver: soft_step`, src/contact/soft_step.hpp).
+TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithTheSoftStep) {
+  JamScene scene = make_jam_scene(JamSceneSpec{});
+  ContactConfig config = jam_contact_config();
+  config.solver = ContactSolverKind::soft_step;
+  ContactWorld world(config);
+  test::expect_jam_settles_and_holds(scene, world);
+}
+
+}  // namespace
+}  // namespace flotsam

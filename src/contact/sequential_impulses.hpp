@@ -1,0 +1,28 @@
+#pragma once
+// Box2D v2.4's contact solver (impulse_solver.hpp) behind the ContactSolver interface: each
+// island's velocity sweeps until they settle, the islands in parallel; the poses moved on by
+// h (u_after - u_before); then the position stage per island.
+#include "contact/contact_solver.hpp"
+
+namespace flotsam {
+
+class SequentialImpulses final : public ContactSolver {
+ public:
+  explicit SequentialImpulses(const ContactConfig& config) : config_(config) {}
+
+  double margin_in_slops() const override { return 2.0; }
+  int solve(std::vector<ContactConstraint>& contacts, const Islands& islands, BodySet& bodies,
+            const SolverMasses& masses, const std::vector<double>& intervals,
+            const BodyVelocities& start) override;
+  void undo(BodySet& bodies) override;
+  double correct_positions(std::vector<ContactConstraint>& contacts, const Islands& islands,
+                           BodySet& bodies, const SolverMasses& masses) override;
+
+ private:
+  ContactConfig config_;
+  std::vector<Vec2> velocity_before_;            // [m/s]
+  std::vector<double> angular_velocity_before_;  // [rad/s]
+  std::vector<double> intervals_;                // h per body [s]
+};
+
+}  // namespace flotsam
