@@ -27,6 +27,12 @@ class VtuFields {
   /// One value per cell: per element, or per sub-triangle (VtuCells::split).
   void add_cell_scalar(std::string name, std::span<const double> values);
   void add_cell_vector(std::string name, std::span<const Vec2> values);
+  // A temporary array would be gone before write_vtu: refused at compile time.
+  void add_point_scalar(std::string, std::vector<double>&&) = delete;
+  void add_point_vector(std::string, std::vector<Vec2>&&) = delete;
+  void add_p1_scalar(std::string, std::vector<double>&&) = delete;
+  void add_cell_scalar(std::string, std::vector<double>&&) = delete;
+  void add_cell_vector(std::string, std::vector<Vec2>&&) = delete;
 
   enum class Kind { point_scalar, point_vector, p1_scalar, cell_scalar, cell_vector };
   struct Field {

@@ -51,7 +51,8 @@ void FemEngine::settle(const TimeConfig& time) {
 
 void FemEngine::write_fields(const std::string& path, double t) const {
   const Mesh& mesh = solver_.mesh();
-  const std::vector<double> H = solver_.depth(), vorticity = solver_.vorticity();
+  const std::vector<double> H = solver_.depth(), vorticity = solver_.vorticity(),
+                            nu_t = solver_.eddy_viscosity();  // the fields hold views of these
   std::vector<Vec2> u(mesh.node_count());
   std::vector<double> speed(mesh.node_count());
   for (int n = 0; n < mesh.node_count(); ++n) {
@@ -65,7 +66,7 @@ void FemEngine::write_fields(const std::string& path, double t) const {
   fields.add_point_vector("u [m/s]", u);
   fields.add_point_scalar("|u| [m/s]", speed);
   fields.add_point_scalar("vorticity [1/s]", vorticity);
-  fields.add_cell_scalar("nu_t [m^2/s]", solver_.eddy_viscosity());
+  fields.add_cell_scalar("nu_t [m^2/s]", nu_t);
   const FlowConfig& flow = solver_.flow_case().flow;
   if (!flow.friction_map.empty() && !solver_.friction_coefficients().empty())
     fields.add_cell_scalar(friction_field_name(flow.friction), solver_.friction_coefficients());
