@@ -240,9 +240,9 @@ void advance_batch(BodySet& bodies, const int* list, int n, const FlowField& flo
       if (!active[j]) continue;
       const BodyStateVector y_j = lane(y, j);
       BodyStateVector y5_j = lane(y5, j);
-      const double norm = rkf45_error_norm<6>(lane(err, j), y_j, y5_j, options[j]);
-      const bool forced = BodyStepHooks{loads[j]}.event(y_j, y5_j);
-      if (rkf45_control(t[j], h[j], tb, h_try[j], step[j], lands[j], norm, forced, options[j].h_min,
+      const double norm =
+          rkf45_event_error_norm<6>(BodyStepHooks{loads[j]}, y_j, y5_j, lane(err, j), options[j]);
+      if (rkf45_control(t[j], h[j], tb, h_try[j], step[j], lands[j], norm, options[j].h_min,
                         options[j].h_max, counters[j])) {
         set_lane(y, j, y5_j);
         need_k1[j] = true;

@@ -11,10 +11,11 @@
 // Step control (spec 3.5): h_opt = 0.8 h |err|^(-1/5); |err| > 1: reject, retry with
 // max(h_opt, h/2, h_min); else accept and propose min(h_opt, 1.5 h, h_max). The interval's end
 // is landed on exactly. Hooks let the caller bound the step (a body moves < l/4 per step) and
-// accept a step that ends in a known event (friction stopping a body), see NoStepHooks.
+// exempt from the error check what a known event sets (friction stopping a body), see NoStepHooks.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace flotsam {
 
@@ -90,15 +91,31 @@ double rkf45_error_norm(const RkVector<N>& err, const RkVector<N>& y, const RkVe
 /// h_opt = 0.8 h (1/|err|)^(1/5) (spec 3.5), with |err| the weighted norm (tolerance 1).
 double rkf45_optimal_step(double h, double error_norm);
 
+/// The weighted error of a trial step from y to y_new after the hooks' event (which may set
+/// components of y_new, e.g. zero a stopped velocity): the components the event set are exact by
+/// the event and carry no error; every other component must meet its tolerance as usual. (A
+/// step that ends in an event is not accepted whatever its error: a long step across a stop can
+/// carry a wildly wrong velocity or position in the components the event did not set.)
+template <int N, class Hooks>
+double rkf45_event_error_norm(Hooks&& hooks, const RkVector<N>& y, RkVector<N>& y_new,
+                              RkVector<N> err, const Rkf45Options<N>& options) {
+  const RkVector<N> before = y_new;
+  if (hooks.event(y, y_new))
+    for (int i = 0; i < N; ++i)
+      if (y_new[i] != before[i]) err[i] = 0.0;
+  return rkf45_error_norm<N>(err, y, y_new, options);
+}
+
 /// The step control of spec 3.5 after a trial step of length `step` from t (h_try before the
 /// landing was cut to t1 - t; `lands`: the step ends at t1) with weighted error `norm`:
-/// rejected (returns false, h = the retry's step) unless norm <= 1, `forced` (an event) or step
-/// <= h_min; accepted (returns true, t = the step's end, h = the next step's proposal).
+/// rejected (returns false, h = the retry's step) unless norm <= 1 or step <= h_min; accepted
+/// (returns true, t = the step's end, h = the next step's proposal). A norm that is not a number
+/// (a state that overflowed in the trial) rejects the step like an infinite one.
 inline bool rkf45_control(double& t, double& h, double t1, double h_try, double step, bool lands,
-                          double norm, bool forced, double h_min, double h_max,
-                          Rkf45Counters& counters) {
+                          double norm, double h_min, double h_max, Rkf45Counters& counters) {
+  if (std::isnan(norm)) norm = std::numeric_limits<double>::infinity();
   const double h_opt = rkf45_optimal_step(step, norm);
-  if (norm > 1.0 && !forced && step > h_min) {  // reject, retry smaller
+  if (norm > 1.0 && step > h_min) {  // reject, retry smaller
     ++counters.rejected;
     h = std::max({h_opt, 0.5 * step, h_min});
     return false;
@@ -116,8 +133,8 @@ struct NoStepHooks {
   double max_step(double /*t*/, const Y& /*y*/) const {
     return 1e300;
   }
-  /// Called with a step's start and end; true accepts the step whatever its error (an event
-  /// that the hook has already applied to y_new).
+  /// Called with a step's start and end; true when an event has set components of y_new (they
+  /// are then exempt from the step's error check, rkf45_event_error_norm).
   template <class Y>
   bool event(const Y& /*y*/, Y& /*y_new*/) const {
     return false;
@@ -145,9 +162,8 @@ RkVector<N> rkf45_integrate(Rhs&& f, First&& first, double t0, double t1, RkVect
       const double step = lands ? t1 - t : h_try;
       RkVector<N> y5, err;
       rkf45_step<N>(f, t, y, step, k1, y5, err);
-      const double norm = rkf45_error_norm<N>(err, y, y5, options);
-      const bool forced = hooks.event(y, y5);
-      if (!rkf45_control(t, h, t1, h_try, step, lands, norm, forced, options.h_min, options.h_max,
+      const double norm = rkf45_event_error_norm<N>(hooks, y, y5, err, options);
+      if (!rkf45_control(t, h, t1, h_try, step, lands, norm, options.h_min, options.h_max,
                          counters))
         continue;  // rejected: retry smaller
       y = y5;

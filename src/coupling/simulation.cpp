@@ -211,11 +211,16 @@ void Simulation::apply_reaction() {
 
 void Simulation::check_diagnostics() {
   auto timed = timer_.time(Stage::diagnostics);
-  for (int i = 0; i < bodies_.size(); ++i)
-    if (!std::isfinite(bodies_.position[i].x()) || !std::isfinite(bodies_.position[i].y()) ||
-        !std::isfinite(bodies_.angle[i]))
-      throw_run_error("t = {:.3f} s: body {} has a non-finite position or angle", time_,
-                      bodies_.id[i]);
+  // Every component of the state (a velocity goes bad a step before the position it moves).
+  for (int i = 0; i < bodies_.size(); ++i) {
+    const char* bad = !bodies_.position[i].allFinite()              ? "position"
+                      : !std::isfinite(bodies_.angle[i])            ? "angle"
+                      : !bodies_.velocity[i].allFinite()            ? "velocity"
+                      : !std::isfinite(bodies_.angular_velocity[i]) ? "angular velocity"
+                                                                    : nullptr;
+    if (bad)
+      throw_run_error("t = {:.3f} s: body {} has a non-finite {}", time_, bodies_.id[i], bad);
+  }
 }
 
 void Simulation::write_output_if_due(bool force) {
