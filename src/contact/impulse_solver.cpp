@@ -216,6 +216,13 @@ int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bod
 int solve_contact_island(std::span<ContactConstraint> island, BodySet& bodies,
                          const SolverMasses& masses, const ContactConfig& config) {
   constexpr double round_off = 1e-12;  // [-] relative energy change taken for rounding
+  bool any_struck = false;
+  for (const ContactConstraint& c : island)
+    for (int k = 0; k < c.point_count; ++k) any_struck |= struck(c.points[k]);
+  if (!any_struck) {  // no restitution target: Newton's law cannot add energy (resting contacts)
+    warm_start_contacts(island, bodies, masses);
+    return solve_contact_velocities(island, bodies, masses, config);
+  }
   std::vector<int> members;
   for (const ContactConstraint& c : island) {
     members.push_back(c.a);
@@ -236,15 +243,11 @@ int solve_contact_island(std::span<ContactConstraint> island, BodySet& bodies,
   for (std::size_t m = 0; m < n; ++m)
     u0[m] = bodies.velocity[members[m]], w0[m] = bodies.angular_velocity[members[m]];
   std::vector<std::array<ContactPointConstraint, 2>> start;  // the points as they came
-  bool any_struck = false;
-  for (const ContactConstraint& c : island) {
-    start.push_back(c.points);
-    for (int k = 0; k < c.point_count; ++k) any_struck |= struck(c.points[k]);
-  }
+  for (const ContactConstraint& c : island) start.push_back(c.points);
   const double e0 = energy();
   warm_start_contacts(island, bodies, masses);
   int sweeps = solve_contact_velocities(island, bodies, masses, config);
-  if (!any_struck || energy() <= e0 * (1.0 + round_off)) return sweeps;
+  if (energy() <= e0 * (1.0 + round_off)) return sweeps;
   // Newton's law gained energy: compression (struck points brought to v_n = 0, with friction),
   // then restitution (normal impulses only), kept within the bound (restitution_energy.hpp).
   for (std::size_t m = 0; m < n; ++m)
