@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/restitution_energy.hpp"
+
 namespace flotsam {
 namespace {
 
@@ -174,8 +176,11 @@ void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& b
   }
 }
 
-int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
-                             const SolverMasses& masses, const ContactConfig& config) {
+namespace {
+
+// The sweeps of solve_contact_velocities; without friction, the normal impulses alone.
+int sweep_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
+                     const SolverMasses& masses, const ContactConfig& config, bool friction) {
   int sweep = 0;
   while (sweep < config.iterations) {
     ++sweep;
@@ -189,11 +194,100 @@ int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bod
               change, solve_normal_point(c, c.points[static_cast<std::size_t>(k)], bodies, masses));
         }
       }
-      change = std::max(change, solve_friction(c, bodies, masses));
+      if (friction) change = std::max(change, solve_friction(c, bodies, masses));
     }
     if (change <= config.velocity_tolerance) break;
   }
   return sweep;
+}
+
+// A struck point: in contact, with the restitution target v* = -e v_n^0 > 0.
+bool struck(const ContactPointConstraint& p) {
+  return p.separation <= 0.0 && p.target_velocity > 0.0;
+}
+
+}  // namespace
+
+int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
+                             const SolverMasses& masses, const ContactConfig& config) {
+  return sweep_velocities(contacts, bodies, masses, config, true);
+}
+
+int solve_contact_island(std::span<ContactConstraint> island, BodySet& bodies,
+                         const SolverMasses& masses, const ContactConfig& config) {
+  constexpr double round_off = 1e-12;  // [-] relative energy change taken for rounding
+  bool any_struck = false;
+  for (const ContactConstraint& c : island)
+    for (int k = 0; k < c.point_count; ++k) any_struck |= struck(c.points[k]);
+  if (!any_struck) {  // no restitution target: Newton's law cannot add energy (resting contacts)
+    warm_start_contacts(island, bodies, masses);
+    return solve_contact_velocities(island, bodies, masses, config);
+  }
+  std::vector<int> members;
+  for (const ContactConstraint& c : island) {
+    members.push_back(c.a);
+    if (c.b >= 0) members.push_back(c.b);
+  }
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  const std::size_t n = members.size();
+  std::vector<Vec2> u0(n), u_mid(n);    // [m/s]
+  std::vector<double> w0(n), w_mid(n);  // [rad/s]
+  auto energy = [&] {                   // [J]
+    double total = 0.0;
+    for (const int i : members)
+      total += solver_kinetic_energy(bodies.velocity[i], bodies.angular_velocity[i],
+                                     masses.inverse_mass[i], masses.inverse_inertia[i]);
+    return total;
+  };
+  for (std::size_t m = 0; m < n; ++m)
+    u0[m] = bodies.velocity[members[m]], w0[m] = bodies.angular_velocity[members[m]];
+  std::vector<std::array<ContactPointConstraint, 2>> start;  // the points as they came
+  for (const ContactConstraint& c : island) start.push_back(c.points);
+  const double e0 = energy();
+  warm_start_contacts(island, bodies, masses);
+  int sweeps = solve_contact_velocities(island, bodies, masses, config);
+  if (energy() <= e0 * (1.0 + round_off)) return sweeps;
+  // Newton's law gained energy: compression (struck points brought to v_n = 0, with friction),
+  // then restitution (normal impulses only), kept within the bound (restitution_energy.hpp).
+  for (std::size_t m = 0; m < n; ++m)
+    bodies.velocity[members[m]] = u0[m], bodies.angular_velocity[members[m]] = w0[m];
+  for (std::size_t k = 0; k < island.size(); ++k) {
+    island[k].points = start[k];
+    for (ContactPointConstraint& p : island[k].points)
+      if (struck(p)) p.target_velocity = 0.0;
+  }
+  warm_start_contacts(island, bodies, masses);
+  sweeps += solve_contact_velocities(island, bodies, masses, config);
+  const double e_mid = energy();
+  for (std::size_t m = 0; m < n; ++m)
+    u_mid[m] = bodies.velocity[members[m]], w_mid[m] = bodies.angular_velocity[members[m]];
+  std::vector<std::array<double, 2>> j_mid;  // [N s]
+  for (std::size_t k = 0; k < island.size(); ++k) {
+    j_mid.push_back({island[k].points[0].normal_impulse, island[k].points[1].normal_impulse});
+    for (std::size_t q = 0; q < 2; ++q)
+      island[k].points[q].target_velocity = start[k][q].target_velocity;
+  }
+  sweeps += sweep_velocities(island, bodies, masses, config, false);
+  RestitutionEnergy change;
+  for (std::size_t m = 0; m < n; ++m) {
+    const int i = members[m];
+    change.add(u_mid[m], w_mid[m], bodies.velocity[i], bodies.angular_velocity[i],
+               masses.inverse_mass[i], masses.inverse_inertia[i]);
+  }
+  const double s = change.fraction(e0, e_mid, config.restitution);  // [-]
+  for (std::size_t m = 0; m < n; ++m) {
+    const int i = members[m];
+    bodies.velocity[i] = u_mid[m] + s * (bodies.velocity[i] - u_mid[m]);
+    bodies.angular_velocity[i] = w_mid[m] + s * (bodies.angular_velocity[i] - w_mid[m]);
+  }
+  for (std::size_t k = 0; k < island.size(); ++k) {
+    for (std::size_t q = 0; q < 2; ++q) {
+      double& j = island[k].points[q].normal_impulse;
+      j = j_mid[k][q] + s * (j - j_mid[k][q]);
+    }
+  }
+  return sweeps;
 }
 
 double correct_contact_positions(std::span<const ContactConstraint> contacts, BodySet& bodies,

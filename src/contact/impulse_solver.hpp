@@ -20,10 +20,12 @@
 // contact, whatever e: a jam pushed by a steady drag approaches its supports by F h / m every
 // interval, and with e = 1 it would bounce off them for ever. With many contacts each point's j is
 // accumulated over sweeps and the running sum clamped to >= 0 (contacts push, never pull) until the
-// normal velocities settle. Two-point manifolds are solved as one 2x2 complementarity problem
-// (block solver), so that parallel logs do not converge slowly through their nearly dependent rows.
-// Friction: the tangential impulse accumulated at each point stays within +- mu_c times its normal
-// impulse.
+// normal velocities settle. When an island so solved gains kinetic energy (Newton's law with
+// friction can), its restitution is bounded by the energy the compression took
+// (restitution_energy.hpp, solve_contact_island). Two-point manifolds are solved as one 2x2
+// complementarity problem (block solver), so that parallel logs do not converge slowly through
+// their nearly dependent rows. Friction: the tangential impulse accumulated at each point stays
+// within +- mu_c times its normal impulse.
 //
 // Position stage (non-linear Gauss-Seidel). The separation s of each point is re-measured from
 // the current poses; a pseudo-impulse -C/K along n, C = beta (s + slop) clamped to
@@ -101,6 +103,14 @@ void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& b
 /// of sweeps.
 int solve_contact_velocities(std::span<ContactConstraint> contacts, BodySet& bodies,
                              const SolverMasses& masses, const ContactConfig& config);
+
+/// One island's velocities: warm start, then solve_contact_velocities. When that gains kinetic
+/// energy (Newton's law with friction, restitution_energy.hpp), the island is solved again from
+/// its start in two passes, compression (struck points to v_n = 0, friction) then restitution
+/// (normal impulses only), the restitution kept within e^2 of the energy the compression took.
+/// Returns the number of sweeps.
+int solve_contact_island(std::span<ContactConstraint> island, BodySet& bodies,
+                         const SolverMasses& masses, const ContactConfig& config);
 
 /// Non-linear Gauss-Seidel position correction, until every overlap is within 1.5 times its
 /// slop or config.position_iterations sweeps; returns the largest overlap seen in the last

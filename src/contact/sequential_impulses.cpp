@@ -34,8 +34,7 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
                                                      : sweeps) if (in_parallel(contacts, islands))
   for (int k = 0; k < count; ++k) {
     const std::span<ContactConstraint> island = islands.island(contacts, order[k]);
-    warm_start_contacts(island, bodies, masses);
-    sweeps = std::max(sweeps, solve_contact_velocities(island, bodies, masses, config_));
+    sweeps = std::max(sweeps, solve_contact_island(island, bodies, masses, config_));
   }
   for (int i = 0; i < bodies.size(); ++i) {
     bodies.position[i] += intervals[i] * (bodies.velocity[i] - velocity_before_[i]);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/restitution_energy.hpp"
+
 #include "core/constants.hpp"
 
 namespace flotsam {
@@ -90,12 +92,16 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
         }
       });
     }
+#pragma omp single
+    for (std::size_t m = 0; m < moving_.size(); ++m)  // after the compression
+      mid_velocity_[m] = velocity_[moving_[m]], mid_spin_[m] = spin_[moving_[m]];
     double worst = 0.0;  // [m]
     each_colour([&](Contact& c) { worst = std::max(worst, restitute(c)); });
 #pragma omp critical
     largest = std::max(largest, worst);
   }
   largest_overlap_ = largest;
+  bound_restitution();
   store(contacts, bodies);
   return 2 * substeps;
 }
@@ -189,6 +195,7 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   }
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
+  mid_velocity_.resize(moving_.size()), mid_spin_.resize(moving_.size());
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
     saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
@@ -282,6 +289,30 @@ void SoftStep::solve_contact(Contact& c, bool bias) {
   }
   if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
   if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
+}
+
+// Newton's law with friction may gain energy (restitution_energy.hpp): when the bodies end with
+// more kinetic energy than they came with, the restitution's change is cut to the fraction that
+// gives back e^2 of what the compression took. The step's moving bodies are taken together.
+void SoftStep::bound_restitution() {
+  constexpr double round_off = 1e-12;         // [-] relative energy change taken for rounding
+  double before = 0.0, mid = 0.0, end = 0.0;  // [J]
+  RestitutionEnergy change;
+  for (std::size_t m = 0; m < moving_.size(); ++m) {
+    const int i = moving_[m];
+    const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
+    before += solver_kinetic_energy(saved_velocity_[m], saved_spin_[m], w, w_i);
+    mid += solver_kinetic_energy(mid_velocity_[m], mid_spin_[m], w, w_i);
+    end += solver_kinetic_energy(velocity_[i], spin_[i], w, w_i);
+    change.add(mid_velocity_[m], mid_spin_[m], velocity_[i], spin_[i], w, w_i);
+  }
+  if (end <= before * (1.0 + round_off)) return;
+  const double s = change.fraction(before, mid, config_.restitution);  // [-]
+  for (std::size_t m = 0; m < moving_.size(); ++m) {
+    const int i = moving_[m];
+    velocity_[i] = mid_velocity_[m] + s * (velocity_[i] - mid_velocity_[m]);
+    spin_[i] = mid_spin_[m] + s * (spin_[i] - mid_spin_[m]);
+  }
 }
 
 // Restitution (M-9) at the points struck in this interval: v_n -> -e v_n^0. Returns the

@@ -90,6 +90,7 @@ class SoftStep final : public ContactSolver {
   void solve_contact(Contact& c, bool bias);
   void warm_start(Contact& c, int substep);
   double restitute(Contact& c);
+  void bound_restitution();
   template <class F>
   void each_colour(F&& f);
 
@@ -108,6 +109,9 @@ class SoftStep final : public ContactSolver {
   // What undo() puts back.
   std::vector<Vec2> saved_position_, saved_velocity_;
   std::vector<double> saved_angle_, saved_spin_;
+  // The velocities after the compression, before restitution (per moving_ body).
+  std::vector<Vec2> mid_velocity_;
+  std::vector<double> mid_spin_;
   double largest_overlap_ = 0.0;  // [m]
 };
 
