@@ -69,9 +69,10 @@ double kinetic_energy(const BodySet& b) {  // [J]
 
 // Two logs (or a log and a wall) meeting at random: placements from 1 cm apart to 1 cm into each
 // other, any angles, speeds up to 2 m/s, spins, e in {0, 0.3, 1} (at a wall too: the restitution
-// is bounded by the energy the compression took, restitution_energy.hpp), friction 0.5. One contact step of a new world: the kinetic energy never grows (to rounding,
-// 1e-12 relative), and between two logs the linear and the angular momentum (about the origin, at
-// the poses the impulses acted at) are kept to 1e-12 relative.
+// is bounded by the energy the compression took, restitution_energy.hpp), friction 0.5. One contact
+// step of a new world: the kinetic energy never grows (to rounding, 1e-12 relative), and between
+// two logs the linear and the angular momentum (about the origin, at the poses the impulses acted
+// at) are kept to 1e-12 relative.
 TEST(SoftStep, NoContactGainsEnergyAndAFreeCollisionKeepsMomentum) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -84,8 +85,7 @@ TEST(SoftStep, NoContactGainsEnergyAndAFreeCollisionKeepsMomentum) {
   for (int trial = 0; trial < 600; ++trial) {
     ContactConfig config = soft_config();
     const bool wall = trial % 2 == 1;
-    config.restitution =
-        std::array{0.0, 0.3, 1.0}[(wall ? trial / 2 : trial) % 3];
+    config.restitution = std::array{0.0, 0.3, 1.0}[(wall ? trial / 2 : trial) % 3];
     BodySet b;
     const double angle = pi * unit(rng);  // [rad]
     b.add(BodySpec{.length = 10.0,
