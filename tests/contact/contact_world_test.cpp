@@ -10,6 +10,7 @@
 
 #include <random>
 
+#include "../support/thrown_jam.hpp"
 #include "contact/jam_scene.hpp"
 
 namespace flotsam {
@@ -46,17 +47,7 @@ TEST(ContactWorld, AStruckLogIsNotPushedIntoAPierItsMarginDidNotReach) {
 // 600 logs in loose rows before 30 piers, thrown about at up to 1 m/s: many islands at once
 // (30 steps: a few seconds under the sanitizers).
 BodySet thrown_logs_after(int threads, int steps, int& most_islands) {
-  JamSceneSpec spec;
-  spec.log_count = 600;
-  spec.pier_count = 30;
-  spec.row_gap = 0.05;  // [m]
-  JamScene scene = make_jam_scene(spec);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> speed(-1.0, 1.0);  // [m/s]
-  for (int i = 0; i < scene.bodies.size(); ++i) {
-    scene.bodies.velocity[i] = {speed(rng), speed(rng)};
-    scene.bodies.angular_velocity[i] = 0.1 * speed(rng);  // [rad/s]
-  }
+  JamScene scene = test::thrown_jam_scene(600, 30, 0.05);  // row gap [m]
   const int old_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   ContactWorld world(jam_contact_config());

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "../support/thrown_jam.hpp"
 #include "contact/contact_world.hpp"
 #include "contact/jam_scene.hpp"
 #include "core/constants.hpp"
@@ -141,17 +142,7 @@ TEST(SoftStep, NoContactGainsEnergyAndAFreeCollisionKeepsMomentum) {
 // the same, bit for bit, on 1 and 2 threads. 1,500 logs packed in rows before 31 piers (one
 // island, over 2,000 contacts: the parallel path), thrown about at up to 1 m/s, 10 steps.
 BodySet thrown_logs_after(int threads, int& most_contacts) {
-  JamSceneSpec spec;
-  spec.log_count = 1500;
-  spec.pier_count = 31;
-  spec.row_gap = 0.0;  // [m]
-  JamScene scene = make_jam_scene(spec);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> speed(-1.0, 1.0);  // [m/s]
-  for (int i = 0; i < scene.bodies.size(); ++i) {
-    scene.bodies.velocity[i] = {speed(rng), speed(rng)};
-    scene.bodies.angular_velocity[i] = 0.1 * speed(rng);  // [rad/s]
-  }
+  JamScene scene = test::thrown_jam_scene(1500, 31, 0.0);  // row gap [m]
   const int old_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   ContactWorld world(soft_config());

@@ -1,0 +1,26 @@
+#pragma once
+// A jam scene (contact/jam_scene.hpp) whose logs are thrown about: velocities uniform in
+// [-1, 1] m/s per component and spins in [-0.1, 0.1] rad/s, from a fixed seed, so that runs on
+// different thread counts start alike.
+#include <random>
+
+#include "contact/jam_scene.hpp"
+
+namespace flotsam::test {
+
+inline JamScene thrown_jam_scene(int log_count, int pier_count, double row_gap /* [m] */) {
+  JamSceneSpec spec;
+  spec.log_count = log_count;
+  spec.pier_count = pier_count;
+  spec.row_gap = row_gap;
+  JamScene scene = make_jam_scene(spec);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> speed(-1.0, 1.0);  // [m/s]
+  for (int i = 0; i < scene.bodies.size(); ++i) {
+    scene.bodies.velocity[i] = {speed(rng), speed(rng)};
+    scene.bodies.angular_velocity[i] = 0.1 * speed(rng);  // [rad/s]
+  }
+  return scene;
+}
+
+}  // namespace flotsam::test
