@@ -162,7 +162,12 @@ FlowConfig read_flow(const YamlMap& m, const std::filesystem::path& case_folder,
   flow.water_density = m.number("density", flow.water_density, Range::between(500.0, 2500.0));
   flow.viscosity = read_viscosity(m, flow.viscosity);
   if (m.has("friction")) read_friction(m.get("friction").map(), case_folder, flow, geodata);
-  if (m.has("turbulence")) read_turbulence(m.get("turbulence").map(), flow);
+  if (flow.engine == FlowEngineKind::fv)
+    m.forbid("turbulence",
+             "flow.turbulence only applies to 'engine: fem' (the finite-volume engine has no eddy "
+             "viscosity)");
+  else if (m.has("turbulence"))
+    read_turbulence(m.get("turbulence").map(), flow);
   if (m.has("coriolis")) {
     flow.coriolis = true;
     flow.latitude_deg = m.get("coriolis")

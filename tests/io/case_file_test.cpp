@@ -552,6 +552,10 @@ TEST(CaseFileError, EngineKeysAreChecked) {
   EXPECT_EQ(error_of(edited("  initial:", "  engine: fem\n  fv: {order: 1}\n  initial:")),
             "case.yaml:6: flow.fv: not allowed here: flow.fv only applies to 'engine: fv' (the "
             "engine is fem)");
+  EXPECT_EQ(error_of(edited("  initial:",
+                            "  engine: fv\n  turbulence: {model: smagorinsky}\n  initial:")),
+            "case.yaml:6: flow.turbulence: not allowed here: flow.turbulence only applies to "
+            "'engine: fem' (the finite-volume engine has no eddy viscosity)");
   const auto fv = [](const std::string& options) {
     return edited("  initial:", "  engine: fv\n  fv: {" + options + "}\n  initial:");
   };
