@@ -67,13 +67,7 @@ TEST(ContactWorld, IslandsSolvedInParallelGiveTheSameResultOnOneAndTwoThreads) {
   const BodySet two = thrown_logs_after(2, 30, islands_2);
   EXPECT_GT(islands_2, 20);  // the parallel path ran, over many islands
   EXPECT_EQ(islands_1, islands_2);
-  int differ = 0;
-  for (int i = 0; i < one.size(); ++i) {
-    differ += one.position[i] != two.position[i] || one.angle[i] != two.angle[i] ||
-              one.velocity[i] != two.velocity[i] ||
-              one.angular_velocity[i] != two.angular_velocity[i];
-  }
-  EXPECT_EQ(differ, 0);  // exact equality, not a tolerance
+  EXPECT_EQ(test::count_different_states(one, two), 0);  // exact equality, not a tolerance
 }
 
 }  // namespace

@@ -161,13 +161,7 @@ TEST(SoftStep, ColoursSolvedInParallelGiveTheSameResultOnOneAndTwoThreads) {
   const BodySet two = thrown_logs_after(2, contacts_2);
   EXPECT_GE(contacts_2, 2000);  // the parallel path ran (soft_step.cpp: parallel_contacts)
   EXPECT_EQ(contacts_1, contacts_2);
-  int differ = 0;
-  for (int i = 0; i < one.size(); ++i) {
-    differ += one.position[i] != two.position[i] || one.angle[i] != two.angle[i] ||
-              one.velocity[i] != two.velocity[i] ||
-              one.angular_velocity[i] != two.angular_velocity[i];
-  }
-  EXPECT_EQ(differ, 0);  // exact equality, not a tolerance
+  EXPECT_EQ(test::count_different_states(one, two), 0);  // exact equality, not a tolerance
 }
 
 // Colours: no two contacts of one colour share a movable body; walls and anchored bodies join

@@ -23,4 +23,14 @@ inline JamScene thrown_jam_scene(int log_count, int pier_count, double row_gap /
   return scene;
 }
 
+/// How many bodies of `one` and `two` differ in pose or velocity, compared exactly.
+inline int count_different_states(const BodySet& one, const BodySet& two) {
+  int differ = 0;
+  for (int i = 0; i < one.size(); ++i)
+    differ += one.position[i] != two.position[i] || one.angle[i] != two.angle[i] ||
+              one.velocity[i] != two.velocity[i] ||
+              one.angular_velocity[i] != two.angular_velocity[i];
+  return differ;
+}
+
 }  // namespace flotsam::test
