@@ -13,8 +13,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/flow_integral.hpp"
 #include "../support/time_schemes.hpp"
-#include "flow/fem/element_values.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -23,26 +23,11 @@ namespace {
 
 constexpr double L = 200.0, H0 = 10.0;  // [m] basin side, still-water depth (flat bed at 0)
 
-double energy(const ShallowWaterSolver& solver) {
-  const Mesh& mesh = solver.mesh();
+double energy(const ShallowWaterSolver& solver) {  // [m^5 s^-2]
   const double g = solver.flow_case().flow.gravity;
-  double E = 0.0;  // [m^5 s^-2]
-  ElementValues ev;
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    compute_element_values(mesh, e, ev, false);
-    const auto& el = mesh.elements[e];
-    for (int q = 0; q < triangle_point_count; ++q) {
-      Vec2 u = Vec2::Zero();
-      double eta = 0.0, z_b = 0.0;
-      for (int b = 0; b < 6; ++b) {
-        u += ev.N2[q][b] * Vec2(solver.u()[el[b]], solver.v()[el[b]]);
-        z_b += ev.N2[q][b] * solver.bed()[el[b]];
-      }
-      for (int j = 0; j < 3; ++j) eta += ev.N1[q][j] * solver.eta()[el[j]];
-      E += (0.5 * (eta - z_b) * u.squaredNorm() + 0.5 * g * (eta - H0) * (eta - H0)) * ev.JxW[q];
-    }
-  }
-  return E;
+  return test::integrate_flow(solver, [&](const Vec2&, const Vec2& u, double eta, double z_b) {
+    return 0.5 * (eta - z_b) * u.squaredNorm() + 0.5 * g * (eta - H0) * (eta - H0);
+  });
 }
 
 // E(400 s) / E(0) and the largest relative rise of E in one step of dt [s].

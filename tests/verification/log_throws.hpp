@@ -13,6 +13,8 @@
 #include <cmath>
 #include <random>
 
+#include <gtest/gtest.h>
+
 #include "contact/contact_world.hpp"
 #include "core/constants.hpp"
 
@@ -127,6 +129,22 @@ inline ThrowStatistics throw_logs(long count, unsigned seed) {
   ThrowStatistics s;
   for (long t = 0; t < count; ++t) throw_one_log(rng, walls, s);
   return s;
+}
+
+// Throws `count` logs (seed `seed`) and checks the exact answer, zero crossings, with the
+// contacts exercised (most throws reach their wall), no overlap reaching the log's axis (l/2),
+// and at most `deepest_end` (relative to l) left at the end of a throw.
+inline void expect_no_crossings(long count, unsigned seed, double deepest_end) {
+  const ThrowStatistics s = throw_logs(count, seed);
+  EXPECT_EQ(s.throws, count);
+  EXPECT_EQ(s.crossings, 0);
+  EXPECT_GT(s.hits, s.throws / 2);
+  EXPECT_LT(s.deepest, 0.5);
+  EXPECT_LT(s.deepest_end, deepest_end);
+  testing::Test::RecordProperty("intervals", static_cast<int>(s.intervals));
+  testing::Test::RecordProperty("hits", static_cast<int>(s.hits));
+  testing::Test::RecordProperty("deepest_permille", static_cast<int>(1000.0 * s.deepest));
+  testing::Test::RecordProperty("deepest_end_per_100000", static_cast<int>(1e5 * s.deepest_end));
 }
 
 }  // namespace flotsam::test

@@ -19,9 +19,9 @@
 #include <tuple>
 #include <vector>
 
+#include "../support/flow_integral.hpp"
 #include "../support/flow_schemes.hpp"
 #include "core/constants.hpp"
-#include "flow/fem/element_values.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -31,23 +31,11 @@ namespace {
 constexpr double L = 100.0, W = 10.0, H = 10.0, a = 0.01;  // [m]
 constexpr int cells = 40;                                  // along x: h = 2.5 m
 
-double energy(const ShallowWaterSolver& solver) {
-  const Mesh& mesh = solver.mesh();
+double energy(const ShallowWaterSolver& solver) {  // [m^5 s^-2]
   const double g = solver.flow_case().flow.gravity;
-  double E = 0.0;  // [m^5 s^-2]
-  ElementValues ev;
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    compute_element_values(mesh, e, ev, false);
-    const auto& el = mesh.elements[e];
-    for (int q = 0; q < triangle_point_count; ++q) {
-      Vec2 u = Vec2::Zero();
-      double eta = 0.0;
-      for (int b = 0; b < 6; ++b) u += ev.N2[q][b] * Vec2(solver.u()[el[b]], solver.v()[el[b]]);
-      for (int j = 0; j < 3; ++j) eta += ev.N1[q][j] * solver.eta()[el[j]];
-      E += (0.5 * eta * u.squaredNorm() + 0.5 * g * (eta - H) * (eta - H)) * ev.JxW[q];
-    }
-  }
-  return E;
+  return test::integrate_flow(solver, [&](const Vec2&, const Vec2& u, double eta, double) {
+    return 0.5 * eta * u.squaredNorm() + 0.5 * g * (eta - H) * (eta - H);
+  });
 }
 
 struct Seiche {

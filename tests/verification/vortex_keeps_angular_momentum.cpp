@@ -16,8 +16,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/flow_integral.hpp"
 #include "../support/flow_schemes.hpp"
-#include "flow/fem/element_values.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -28,23 +28,11 @@ constexpr double L = 200.0, H0 = 10.0;  // [m] basin side, still-water depth (fl
 constexpr double R = 30.0, U = 0.5;     // [m] vortex radius, [m/s] its speed scale
 const Vec2 centre(0.5 * L, 0.5 * L);
 
-double angular_momentum(const ShallowWaterSolver& solver) {
-  const Mesh& mesh = solver.mesh();
-  double total = 0.0;  // [m^5/s]
-  ElementValues ev;
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    compute_element_values(mesh, e, ev, false);
-    const auto& el = mesh.elements[e];
-    for (int q = 0; q < triangle_point_count; ++q) {
-      Vec2 u = Vec2::Zero();
-      double eta = 0.0;
-      for (int b = 0; b < 6; ++b) u += ev.N2[q][b] * Vec2(solver.u()[el[b]], solver.v()[el[b]]);
-      for (int j = 0; j < 3; ++j) eta += ev.N1[q][j] * solver.eta()[el[j]];
-      const Vec2 r = ev.x[q] - centre;
-      total += eta * (r.x() * u.y() - r.y() * u.x()) * ev.JxW[q];
-    }
-  }
-  return total;
+double angular_momentum(const ShallowWaterSolver& solver) {  // [m^5/s]
+  return test::integrate_flow(solver, [](const Vec2& x, const Vec2& u, double eta, double) {
+    const Vec2 r = x - centre;
+    return eta * (r.x() * u.y() - r.y() * u.x());
+  });
 }
 
 class FreeVortex : public testing::TestWithParam<FlowScheme> {};
