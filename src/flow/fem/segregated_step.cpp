@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -263,7 +264,8 @@ void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
 
 SegregatedStep::~SegregatedStep() = default;
 
-// One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3), the
+// One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3) (without
+// an eddy viscosity nu_e is the constant nu and K_nu is assembled at the first step only), the
 // explicit transposed-gradient viscous part, the forcing (7), the friction rate (5) lumped at
 // the nodes, the continuity source (11).
 void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads) {
@@ -273,7 +275,9 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   loads.force.assign(N2, Vec2::Zero());
   loads.gamma_m.assign(N2, 0.0);
   loads.source = Vector::Zero(mesh_.vertex_count);
-  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  const bool constant_k = flow.turbulence == TurbulenceModel::none;
+  const bool assemble_k = !(constant_k && k_viscosity_ == flow.viscosity);
+  if (assemble_k) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
   AssemblyParameters p;
   p.friction = FrictionModel::from(flow);
   const Vec2 wind_stress = air_density / flow.water_density * wind_drag_coefficient *
@@ -347,7 +351,7 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
       }
       for (int i = 0; i < 3; ++i) loads.source[el[i]] += ev.N1[q][i] * S * JxW;  // (11)
     }
-    for (int a = 0, ab = 21 * e; a < 6; ++a)  // (4), (nu_e grad u, grad w)
+    for (int a = 0, ab = 21 * e; a < 6 && assemble_k; ++a)  // (4), (nu_e grad u, grad w)
       for (int b = a; b < 6; ++b, ++ab) {
         const double k = nu_e * k_geometry_[ab];
         K_.valuePtr()[k_position_[36 * e + 6 * a + b]] += k;
@@ -357,6 +361,7 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
     // element's force, so that a forced state at rest (wind set-up) balances node by node.
     for (int a = 0; a < 6; ++a) loads.force[el[a]] += diagonal[a] / diagonal_sum * total_force;
   });
+  k_viscosity_ = constant_k ? flow.viscosity : std::numeric_limits<double>::quiet_NaN();
 }
 
 // (M-21) for u and v apart: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -

@@ -31,6 +31,7 @@
 #include <Eigen/Sparse>
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -95,6 +96,7 @@ class SegregatedStep {
   IncompleteCholesky predictor_factor_;  // of (M-21)'s matrix, each step
   std::vector<int> k_position_;          // per element 36 positions in K_'s values
   std::vector<double> k_geometry_;       // per element (grad N_a, grad N_b), b >= a: 21 [-]
+  double k_viscosity_ = std::numeric_limits<double>::quiet_NaN();  // K_'s constant nu [m^2/s]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none
