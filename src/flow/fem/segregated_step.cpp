@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "flow/fem/conjugate_gradients.hpp"
+#include "flow/fem/node_ordering.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "flow/fem/turbulence.hpp"
 
@@ -18,52 +21,10 @@ constexpr int max_extra_iterations = 3;    // GMRES iterations an aged factor ma
                                            // fresh one's before it is refactorised
 constexpr int max_fresh_iterations = 40;   // GMRES iterations with a fresh factor
 constexpr double gmres_tolerance = 1e-12;  // [-] |r| / |b| that ends an elevation solve
-constexpr int max_cg_iterations = 200;     // [-] of the momentum predictor (Jacobi, diagonally
-                                           // dominant: nu dt / h^2 << 1 makes it a few)
+constexpr int max_cg_iterations = 200;     // [-] of the momentum predictor (incomplete Cholesky
+                                           // preconditioned: a few to ten)
 
 using Vector = Eigen::VectorXd;
-
-// Conjugate gradients for A x = b on the free entries (fixed ones keep their value in x):
-// apply(p, Ap) computes A p, precondition(r, z) z = P^-1 r; both see zero at fixed entries.
-template <class Apply, class Precondition>
-int conjugate_gradients(const Apply& apply, const Precondition& precondition,
-                        const std::vector<char>& fixed, const Vector& b, Vector& x,
-                        double tolerance, int max_iterations) {
-  const auto mask = [&](Vector& w) {
-    for (Eigen::Index i = 0; i < w.size(); ++i)
-      if (fixed[i]) w[i] = 0.0;
-  };
-  Vector Ap(x.size());
-  apply(x, Ap);
-  Vector r = b - Ap;
-  mask(r);
-  const double b_norm = [&] {
-    Vector bf = b;
-    mask(bf);
-    return bf.norm();
-  }();
-  const double stop = tolerance * std::max(b_norm, 1e-300);
-  if (r.norm() <= stop) return 0;
-  Vector z(x.size());
-  precondition(r, z);
-  mask(z);
-  Vector p = z;
-  double rz = r.dot(z);
-  for (int k = 1; k <= max_iterations; ++k) {
-    apply(p, Ap);
-    mask(Ap);
-    const double alpha = rz / p.dot(Ap);
-    x += alpha * p;
-    r -= alpha * Ap;
-    if (r.norm() <= stop) return k;
-    precondition(r, z);
-    mask(z);
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
-  }
-  return max_iterations + 1;  // not converged
-}
 
 // GMRES for A x = b, right-preconditioned (A P^-1 y = b, x = P^-1 y), from x, without restart:
 // apply(p, Ap) computes A p, precondition(r, z) z = P^-1 r. Returns the iterations, or
@@ -115,6 +76,47 @@ int gmres(const Apply& apply, const Precondition& precondition, const Vector& b,
   return converged ? k : max_iterations + 1;
 }
 
+// A compressed column-major matrix of `rows` rows whose column j sums, over the elements listed
+// for it (list[start[j]] .. list[start[j + 1]], in that order), what entries(e, j, add) adds with
+// add(row, value): rows sorted, each entry's terms summed in the list's order.
+template <class Entries>
+Eigen::SparseMatrix<double, Eigen::ColMajor, int> column_assembled(int columns, int rows,
+                                                                   const std::vector<int>& start,
+                                                                   const std::vector<int>& list,
+                                                                   const Entries& entries) {
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> A(rows, columns);
+  std::vector<int> slot(rows, -1), touched;
+  std::vector<int> outer(columns + 1, 0), inner;
+  std::vector<double> values, sums;
+  for (int j = 0; j < columns; ++j) {
+    touched.clear();
+    sums.clear();
+    for (int k = start[j]; k < start[j + 1]; ++k)
+      entries(list[k], j, [&](int row, double value) {
+        if (slot[row] < 0) {
+          slot[row] = static_cast<int>(touched.size());
+          touched.push_back(row);
+          sums.push_back(0.0);
+        }
+        sums[slot[row]] += value;
+      });
+    std::vector<int> order(touched.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return touched[a] < touched[b]; });
+    for (int k : order) {
+      inner.push_back(touched[k]);
+      values.push_back(sums[k]);
+    }
+    for (int row : touched) slot[row] = -1;
+    outer[j + 1] = static_cast<int>(inner.size());
+  }
+  A.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
+  std::copy(values.begin(), values.end(), A.valuePtr());
+  return A;
+}
+
 }  // namespace
 
 // Per-node momentum loads of one step [m^3 s^-2], the lumped friction [m^2/s], and the P1
@@ -123,23 +125,25 @@ struct SegregatedStep::Loads {
   std::vector<Vec2> force;      // (7) forcing, minus the explicit transposed viscous part of (4)
   std::vector<double> gamma_m;  // sum over elements of m_a^e gamma_a: friction (5), lumped
   Vector source;                // (11) (q_i, S)
+  std::vector<double> depth;    // H^n per node [m]
 };
 
 SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.mesh()) {
   const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count, E = mesh_.element_count();
   m_.assign(N2, 0.0);
   k_geometry_.assign(21 * static_cast<size_t>(E), 0.0);
-  std::vector<Eigen::Triplet<double>> g, m1, k;
-  g.reserve(36 * static_cast<size_t>(E));
+  // Per element, each node's share of it (M_L's weight) and the integrals of grad M_i: G's
+  // entries, assembled by columns below (a list of all entries would triple the peak memory).
+  std::vector<std::array<double, 6>> weight(E);  // [-]
+  std::vector<std::array<Vec2, 3>> slope(E);     // [m]
+  std::vector<Eigen::Triplet<double>> m1;
   m1.reserve(9 * static_cast<size_t>(E));
-  k.reserve(36 * static_cast<size_t>(E));
   ElementValues ev;
   for (int e = 0; e < E; ++e) {
     compute_element_values(mesh_, e, ev, false);
     const auto& el = mesh_.elements[e];
     std::array<double, 6> diagonal{};  // (N_a, N_a) [m^2]
-    std::array<Vec2, 3> slope;         // integral of grad M_i over the element [m]
-    slope.fill(Vec2::Zero());
+    slope[e].fill(Vec2::Zero());       // integral of grad M_i over the element [m]
     double area = 0.0;
     for (int q = 0; q < triangle_point_count; ++q) {
       area += ev.JxW[q];
@@ -148,7 +152,7 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
         for (int b = a; b < 6; ++b, ++ab)
           k_geometry_[ab] += ev.dN2[q][a].dot(ev.dN2[q][b]) * ev.JxW[q];
       for (int i = 0; i < 3; ++i) {
-        slope[i] += ev.dN1[q][i] * ev.JxW[q];
+        slope[e][i] += ev.dN1[q][i] * ev.JxW[q];
         for (int j = 0; j < 3; ++j)
           m1.emplace_back(el[i], el[j], ev.N1[q][i] * ev.N1[q][j] * ev.JxW[q]);  // (8)
       }
@@ -156,80 +160,103 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
     double sum = 0.0;
     for (double d : diagonal) sum += d;
     for (int a = 0; a < 6; ++a) {
-      const double weight = diagonal[a] / sum;  // [-] node a's share of the element (M_L)
-      m_[el[a]] += area * weight;               // M_L, diagonal scaling
-      for (int i = 0; i < 3; ++i)  // (3) (9) in M_L's nodal quadrature: m_a^e (grad M_i)_e
-        for (int c = 0; c < 2; ++c) g.emplace_back(2 * el[a] + c, el[i], weight * slope[i][c]);
+      weight[e][a] = diagonal[a] / sum;  // [-] node a's share of the element (M_L)
+      m_[el[a]] += area * weight[e][a];  // M_L, diagonal scaling
     }
-    for (int a = 0; a < 6; ++a)
-      for (int b = 0; b < 6; ++b) k.emplace_back(el[a], el[b], 0.0);
   }
   mid_ends_.assign(N2 - N1, {0, 0});
   for (int e = 0; e < E; ++e)
     for (int side = 0; side < 3; ++side)
       mid_ends_[mesh_.elements[e][3 + side] - N1] = {mesh_.elements[e][side],
                                                      mesh_.elements[e][(side + 1) % 3]};
-  G_.resize(2 * N2, N1);
-  G_.setFromTriplets(g.begin(), g.end());
-  M1_.resize(N1, N1);
-  M1_.setFromTriplets(m1.begin(), m1.end());
-  plan_schur_matrix();
-  K_.resize(N2, N2);
-  K_.setFromTriplets(k.begin(), k.end());
-  K_.makeCompressed();
+  // The elements at each node, in increasing order.
+  std::vector<int> at_start(N2 + 1, 0), at_node(6 * static_cast<size_t>(E));
+  for (const auto& el : mesh_.elements)
+    for (int a : el) ++at_start[a + 1];
+  for (int a = 0; a < N2; ++a) at_start[a + 1] += at_start[a];
+  {
+    std::vector<int> fill(at_start.begin(), at_start.end() - 1);
+    for (int e = 0; e < E; ++e)
+      for (int a : mesh_.elements[e]) at_node[fill[a]++] = e;
+  }
+  // (3) (9) in M_L's nodal quadrature, by columns: G_(2a+c),i = sum over the elements e at
+  // vertex i of m_a^e (d M_i / d x_c)_e, in increasing e (the sums as a list of entries made them).
+  G_ = column_assembled(N1, 2 * N2, at_start, at_node, [&](int e, int i, auto add) {
+    const auto& el = mesh_.elements[e];
+    const int local = el[0] == i ? 0 : el[1] == i ? 1 : 2;
+    for (int a = 0; a < 6; ++a)
+      for (int c = 0; c < 2; ++c) add(2 * el[a] + c, weight[e][a] * slope[e][local][c]);
+  });
+  weight = {};
+  slope = {};
+  {
+    SparseMatrix M1(N1, N1);  // P1 mass [m^2]
+    M1.setFromTriplets(m1.begin(), m1.end());
+    m1 = {};
+    plan_schur_matrix(M1);
+  }
+  // K_nu's pattern, its unknowns renumbered by locality (reverse Cuthill-McKee) for the
+  // predictor's sweeps and its incomplete factor.
+  const SparseMatrix pattern =
+      column_assembled(N2, N2, at_start, at_node, [&](int e, int, auto add) {
+        for (int b : mesh_.elements[e]) add(b, 0.0);
+      });
+  node_order_ = reverse_cuthill_mckee(pattern);
+  std::vector<int> old_of(N2), at_new(at_node.size()), at_new_start(N2 + 1, 0);
+  for (int a = 0; a < N2; ++a) old_of[node_order_[a]] = a;
+  for (int k = 0; k < N2; ++k) {
+    at_new_start[k + 1] = at_new_start[k] + at_start[old_of[k] + 1] - at_start[old_of[k]];
+    std::copy(at_node.begin() + at_start[old_of[k]], at_node.begin() + at_start[old_of[k] + 1],
+              at_new.begin() + at_new_start[k]);
+  }
+  K_ = column_assembled(N2, N2, at_new_start, at_new, [&](int e, int, auto add) {
+    for (int b : mesh_.elements[e]) add(node_order_[b], 0.0);
+  });
   k_position_.resize(36 * static_cast<size_t>(E));
   for (int e = 0; e < E; ++e) {
     const auto& el = mesh_.elements[e];
     for (int a = 0; a < 6; ++a)
       for (int b = 0; b < 6; ++b) {
-        const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[el[b]];
-        const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[el[b] + 1];
+        const int column = node_order_[el[b]];
+        const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[column];
+        const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[column + 1];
         k_position_[36 * e + 6 * a + b] =
-            static_cast<int>(std::lower_bound(begin, end, el[a]) - K_.innerIndexPtr());
+            static_cast<int>(std::lower_bound(begin, end, node_order_[el[a]]) - K_.innerIndexPtr());
       }
   }
+  predictor_factor_.analyse(K_);
 }
 
 // The pattern of S = M_1 + G^T D G (D: 2x2 blocks per P2 node) and, per node a, where each
-// product of its rows of G lands in S's values, so that (M-22) is assembled in place each step.
-void SegregatedStep::plan_schur_matrix() {
-  const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count;
-  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  const RowMatrix rows = G_;  // rows 2a and 2a + 1 share their columns
-  std::vector<Eigen::Triplet<double>> pattern;
-  for (int k = 0; k < M1_.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator entry(M1_, k); entry; ++entry)
-      pattern.emplace_back(static_cast<int>(entry.row()), k, 0.0);
-  schur_node_start_.assign(N2 + 1, 0);
-  schur_vertex_.clear();
-  schur_slope_.clear();
-  for (int a = 0; a < N2; ++a) {
-    for (RowMatrix::InnerIterator x(rows, 2 * a), y(rows, 2 * a + 1); x; ++x, ++y) {
-      schur_vertex_.push_back(static_cast<int>(x.col()));
-      schur_slope_.emplace_back(x.value(), y.value());
-    }
-    schur_node_start_[a + 1] = static_cast<int>(schur_vertex_.size());
-    for (int p = schur_node_start_[a]; p < schur_node_start_[a + 1]; ++p)
-      for (int q = schur_node_start_[a]; q < schur_node_start_[a + 1]; ++q)
-        pattern.emplace_back(schur_vertex_[p], schur_vertex_[q], 0.0);
-  }
-  S_.resize(N1, N1);
-  S_.setFromTriplets(pattern.begin(), pattern.end());
+// product of its rows of G (2a and 2a + 1 share their columns) lands in S's values, so that
+// (M-22) is assembled in place each step.
+void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
+  const int N2 = mesh_.node_count();
+  S_ = SparseMatrix(G_.transpose() * G_) + M1;
   S_.makeCompressed();
+  std::fill(S_.valuePtr(), S_.valuePtr() + S_.nonZeros(), 0.0);
   const auto position = [&](int i, int j) {
     const int* begin = S_.innerIndexPtr() + S_.outerIndexPtr()[j];
     const int* end = S_.innerIndexPtr() + S_.outerIndexPtr()[j + 1];
     return static_cast<int>(std::lower_bound(begin, end, i) - S_.innerIndexPtr());
   };
+  const int* vertex = G_.innerIndexPtr();
+  size_t pairs = 0;
+  for (int a = 0; a < N2; ++a) {
+    const size_t count = G_.outerIndexPtr()[2 * a + 1] - G_.outerIndexPtr()[2 * a];
+    pairs += count * count;
+  }
   schur_position_.clear();
-  for (int a = 0; a < N2; ++a)
-    for (int p = schur_node_start_[a]; p < schur_node_start_[a + 1]; ++p)
-      for (int q = schur_node_start_[a]; q < schur_node_start_[a + 1]; ++q)
-        schur_position_.push_back(position(schur_vertex_[p], schur_vertex_[q]));
+  schur_position_.reserve(pairs);
+  for (int a = 0; a < N2; ++a) {
+    const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
+    for (int p = begin; p < end; ++p)
+      for (int q = begin; q < end; ++q) schur_position_.push_back(position(vertex[p], vertex[q]));
+  }
   m1_position_.clear();
   m1_value_.clear();
-  for (int k = 0; k < M1_.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator entry(M1_, k); entry; ++entry) {
+  for (int k = 0; k < M1.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator entry(M1, k); entry; ++entry) {
       m1_position_.push_back(position(static_cast<int>(entry.row()), k));
       m1_value_.push_back(entry.value());
     }
@@ -237,7 +264,8 @@ void SegregatedStep::plan_schur_matrix() {
 
 SegregatedStep::~SegregatedStep() = default;
 
-// One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3), the
+// One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3) (without
+// an eddy viscosity nu_e is the constant nu and K_nu is assembled at the first step only), the
 // explicit transposed-gradient viscous part, the forcing (7), the friction rate (5) lumped at
 // the nodes, the continuity source (11).
 void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads) {
@@ -247,12 +275,24 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   loads.force.assign(N2, Vec2::Zero());
   loads.gamma_m.assign(N2, 0.0);
   loads.source = Vector::Zero(mesh_.vertex_count);
-  std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  const bool constant_k = flow.turbulence == TurbulenceModel::none;
+  const bool assemble_k = !(constant_k && k_viscosity_ == flow.viscosity);
+  if (assemble_k) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
   AssemblyParameters p;
   p.friction = FrictionModel::from(flow);
   const Vec2 wind_stress = air_density / flow.water_density * wind_drag_coefficient *
                            flow.wind.norm() * flow.wind;  // (M-2) wind, times H [m^2 s^-2]
   const SourceFunction* source = s.options_.source ? &s.options_.source : nullptr;
+  // Per node: H^n, |u^n| and, with one friction coefficient, the rate (5) itself, so that the
+  // elements at a node do not each compute it again.
+  const bool by_element = !s.friction_coefficient_.empty();
+  loads.depth.resize(N2);
+  std::vector<double> speed(N2), node_rate(by_element ? 0 : N2);  // [m/s], [1/s]
+  for (int a = 0; a < N2; ++a) {
+    loads.depth[a] = s.node_depth_of(n, a);
+    speed[a] = std::hypot(n.u[a], n.v[a]);
+    if (!by_element) node_rate[a] = p.friction.rate(speed[a], loads.depth[a]);
+  }
   s.for_each_element([&](int e) {
     FrictionModel friction = p.friction;
     if (!s.friction_coefficient_.empty()) friction.coefficient = s.friction_coefficient_[e];
@@ -279,8 +319,8 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
     double diagonal_sum = 0.0;
     for (double d : diagonal) diagonal_sum += d;
     for (int a = 0; a < 6; ++a) {  // (5) friction, lumped: m_a^e gamma(|u^n_a|, H^n_a)
-      const double H_a = s.node_depth_of(n, el[a]);
-      const double gamma = friction.rate(std::hypot(n.u[el[a]], n.v[el[a]]), H_a);
+      const double gamma =
+          by_element ? friction.rate(speed[el[a]], loads.depth[el[a]]) : node_rate[el[a]];
       loads.gamma_m[el[a]] += A * diagonal[a] / diagonal_sum * gamma;
     }
     Vec2 total_force = Vec2::Zero();  // integral of (7) over the element [m^3 s^-2]
@@ -311,7 +351,7 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
       }
       for (int i = 0; i < 3; ++i) loads.source[el[i]] += ev.N1[q][i] * S * JxW;  // (11)
     }
-    for (int a = 0, ab = 21 * e; a < 6; ++a)  // (4), (nu_e grad u, grad w)
+    for (int a = 0, ab = 21 * e; a < 6 && assemble_k; ++a)  // (4), (nu_e grad u, grad w)
       for (int b = a; b < 6; ++b, ++ab) {
         const double k = nu_e * k_geometry_[ab];
         K_.valuePtr()[k_position_[36 * e + 6 * a + b]] += k;
@@ -321,46 +361,50 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
     // element's force, so that a forced state at rest (wind set-up) balances node by node.
     for (int a = 0; a < 6; ++a) loads.force[el[a]] += diagonal[a] / diagonal_sum * total_force;
   });
+  k_viscosity_ = constant_k ? flow.viscosity : std::numeric_limits<double>::quiet_NaN();
 }
 
 // (M-21) for u and v apart: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -
 // (1-theta) K_nu u^n, A_a = m_a/dt + gamma_a m_a, velocity nodes fixed at their boundary values
-// (set in u, v on entry), by Jacobi-preconditioned conjugate gradients. Without viscosity the
-// matrix is diagonal and one iteration solves it.
+// (set in u, v on entry), by conjugate gradients preconditioned with the matrix's zero fill-in
+// incomplete Cholesky factor (made each step: friction and the eddy viscosity change the
+// matrix), on the nodes in K_'s order (node_order_).
 void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Prediction& in,
                                       std::vector<double>& u, std::vector<double>& v) {
   const int N2 = mesh_.node_count();
   const FlowState& n = s.previous_;
   std::vector<char> fixed(N2, 0);
-  for (const auto& node : s.bc_.velocity_nodes) fixed[node.node] = 1;
-  const Vector K_diagonal = K_.diagonal();
+  for (const auto& node : s.bc_.velocity_nodes) fixed[node_order_[node.node]] = 1;
+  Vector A(N2);  // [m^2/s] in K_'s order
+  for (int a = 0; a < N2; ++a) A[node_order_[a]] = (*in.A)[a];
+  predictor_factor_.factorise(K_, in.theta, A, fixed);
+  Vector w_n(N2), b(N2), x(N2), K_w_n(N2);
   for (int c = 0; c < 2; ++c) {
     std::vector<double>& w = c == 0 ? u : v;
-    const std::vector<double>& w_n = c == 0 ? n.u : n.v;
+    const std::vector<double>& w_old = c == 0 ? n.u : n.v;
     const std::vector<double>& w_d = c == 0 ? s.u_departure_ : s.v_departure_;
-    const Vector K_w_n = K_ * Eigen::Map<const Vector>(w_n.data(), N2);
-    Vector b(N2), x(N2);
+    for (int a = 0; a < N2; ++a) w_n[node_order_[a]] = w_old[a];
+    K_w_n.noalias() = K_ * w_n;
     for (int a = 0; a < N2; ++a) {
-      b[a] = m_[a] * w_d[a] * in.inv_dt                  // (1)
+      const int k = node_order_[a];
+      b[k] = m_[a] * w_d[a] * in.inv_dt                  // (1)
              - in.theta * in.g * (*in.G_eta)[2 * a + c]  // (3) implicit part at t^n
              + (c == 0 ? in.loads->force[a].x() : in.loads->force[a].y())  // (4) (7)
-             - (1.0 - in.theta) * K_w_n[a];                                // (4)
-      x[a] = fixed[a] ? w[a] : w_n[a];
+             - (1.0 - in.theta) * K_w_n[k];                                // (4)
+      x[k] = fixed[k] ? w[a] : w_old[a];
     }
     const auto apply = [&](const Vector& p, Vector& y) {
       y.noalias() = in.theta * (K_ * p);  // (4)
-      y += in.A->cwiseProduct(p);         // (1) (5)
+      y += A.cwiseProduct(p);             // (1) (5)
     };
-    const auto precondition = [&](const Vector& r, Vector& z) {
-      z = r.cwiseQuotient(*in.A + in.theta * K_diagonal);
-    };
+    const auto precondition = [&](const Vector& r, Vector& z) { predictor_factor_.solve(r, z); };
     const int iterations =
         conjugate_gradients(apply, precondition, fixed, b, x, 1e-10, max_cg_iterations);
     if (iterations > max_cg_iterations)
       throw_run_error("flow: the momentum predictor (M-21) did not converge in {} iterations",
                       max_cg_iterations);
     momentum_iterations_ += iterations;
-    for (int a = 0; a < N2; ++a) w[a] = x[a];
+    for (int a = 0; a < N2; ++a) w[a] = x[node_order_[a]];
   }
 }
 
@@ -455,10 +499,9 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
       else if (slip.outward.dot(Vec2(n.u[slip.node], n.v[slip.node])) <= 0.0)
         P_after[slip.node] = tangent;
     }
-    std::vector<double> H(N2);
+    const std::vector<double>& H = loads.depth;  // [m] H^n
     Vector flux(2 * N2);  // [m^2/s] H (theta P u~ + (1 - theta) u^n), by node
     for (int a = 0; a < N2; ++a) {
-      H[a] = s.node_depth_of(n, a);
       const bool fixed = P[a].isZero();
       const Vec2 u_tilde =
           fixed ? Vec2(next.u[a], next.v[a]) : Vec2(P[a] * Vec2(next.u[a], next.v[a]));
@@ -476,12 +519,14 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     for (size_t k = 0; k < m1_position_.size(); ++k)
       S_values[m1_position_[k]] = m1_value_[k] / dt;  // (8)
     const int* position = schur_position_.data();
+    const double* slope = G_.valuePtr();  // rows 2a, 2a + 1: G_(2a+c),i at begin + k, end + k
     for (int a = 0; a < N2; ++a) {
       const Mat2 D_a = th * th * g * H[a] / A[a] * P[a];  // [1/s]
-      const int begin = schur_node_start_[a], end = schur_node_start_[a + 1];
-      for (int p = begin; p < end; ++p) {
-        const Vec2 w = D_a * schur_slope_[p];
-        for (int q = begin; q < end; ++q) S_values[*position++] += w.dot(schur_slope_[q]);
+      const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
+      for (int p = 0; p < end - begin; ++p) {
+        const Vec2 w = D_a * Vec2(slope[begin + p], slope[end + p]);
+        for (int q = 0; q < end - begin; ++q)
+          S_values[*position++] += w.dot(Vec2(slope[begin + q], slope[end + q]));
       }
     }
     const SparseMatrix& S = S_;

@@ -22,17 +22,21 @@
 // viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
 // P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
 // velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing (7) is integrated
-// in M_L's quadrature too. The elevation system is solved by GMRES preconditioned with a CHOLMOD
-// Cholesky factor of an earlier step's SPD part, refactorised when GMRES needs more than
+// in M_L's quadrature too. The momentum predictor is solved by conjugate gradients preconditioned
+// with its matrix's zero fill-in incomplete Cholesky factor, on the P2 nodes renumbered by
+// locality (reverse Cuthill-McKee). The elevation system is solved by GMRES preconditioned with a
+// CHOLMOD Cholesky factor of an earlier step's SPD part, refactorised when GMRES needs more than
 // max_extra_iterations beyond what it needed after the last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "core/vec.hpp"
+#include "flow/fem/incomplete_cholesky.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
@@ -72,25 +76,27 @@ class SegregatedStep {
                         std::vector<double>& v);
   using Operator = std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>;
   /// (M-22): x with apply(x) = b, preconditioned by the Cholesky factor of the SPD part S.
-  void plan_schur_matrix();
+  void plan_schur_matrix(const SparseMatrix& M1);
   Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
                                   const Operator& apply);
 
   const Mesh& mesh_;
   std::vector<double> m_;  // [m^2] lumped P2 mass per node
-  SparseMatrix G_;         // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  RowMatrix G_;  // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
   std::vector<std::array<int, 2>> mid_ends_;  // the two vertices of each mid node (index - N1)
-  SparseMatrix M1_;                           // P1 mass [m^2]
   SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
-  std::vector<int> schur_node_start_;  // per P2 node, its range in schur_vertex_/schur_slope_
-  std::vector<int> schur_vertex_;      // the vertices i of node a's rows of G
-  std::vector<Vec2> schur_slope_;      // (G_2a,i, G_2a+1,i) [m]
-  std::vector<int> schur_position_;    // per node, per pair (i, j) of its vertices: S_'s value
-  std::vector<int> m1_position_;       // M_1's entries in S_'s values
-  std::vector<double> m1_value_;       // [m^2]
-  SparseMatrix K_;               // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s]
-  std::vector<int> k_position_;  // per element 36 positions in K_'s values
-  std::vector<double> k_geometry_;  // per element (grad N_a, grad N_b), b >= a: 21 [-]
+  std::vector<int> schur_position_;  // per node, per pair (i, j) of its vertices: S_'s value
+  std::vector<int> m1_position_;     // M_1's entries in S_'s values
+  std::vector<double> m1_value_;     // [m^2]
+  // The momentum predictor (M-21) works on the P2 nodes renumbered by locality: node a is
+  // unknown node_order_[a] of K_, of the factor and of the predictor's vectors.
+  std::vector<int> node_order_;
+  SparseMatrix K_;  // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s], reordered
+  IncompleteCholesky predictor_factor_;  // of (M-21)'s matrix, each step
+  std::vector<int> k_position_;          // per element 36 positions in K_'s values
+  std::vector<double> k_geometry_;       // per element (grad N_a, grad N_b), b >= a: 21 [-]
+  double k_viscosity_ = std::numeric_limits<double>::quiet_NaN();  // K_'s constant nu [m^2/s]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none

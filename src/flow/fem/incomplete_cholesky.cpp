@@ -1,0 +1,92 @@
+#include "flow/fem/incomplete_cholesky.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace flotsam {
+
+// K is symmetric: its column i is its row i, and the entries with index <= i form row i of the
+// lower triangle, in increasing column, the diagonal last.
+void IncompleteCholesky::analyse(const SparseMatrix& K) {
+  const int n = static_cast<int>(K.cols());
+  outer_ = K.outerIndexPtr();
+  index_ = K.innerIndexPtr();
+  row_start_.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    int p = outer_[i];
+    while (p < outer_[i + 1] && index_[p] < i) ++p;
+    if (p == outer_[i + 1] || index_[p] != i)
+      throw_run_error("incomplete Cholesky: row {} of the pattern has no diagonal entry", i);
+    row_start_[i + 1] = row_start_[i] + (p - outer_[i]) + 1;
+  }
+  value_.assign(static_cast<size_t>(row_start_[n]), 0.0);
+  marker_.assign(n, -1);
+}
+
+void IncompleteCholesky::factorise(const SparseMatrix& K, double s, const Eigen::VectorXd& d,
+                                   const std::vector<char>& fixed) {
+  for (double shift = 0.0;; shift = shift == 0.0 ? 1e-3 : 2.0 * shift) {
+    if (try_factorise(K, s, d, fixed, shift)) {
+      shift_ = shift;
+      return;
+    }
+    if (shift > 1e3) throw_run_error("incomplete Cholesky: the matrix is not positive definite");
+  }
+}
+
+// Row by row: L_ij = (A_ij - sum_{k<j} L_ik L_jk) / L_jj for j < i in the pattern,
+// L_ii = sqrt(A_ii (1 + shift) - sum_{k<i} L_ik^2); the sums over the pattern's common columns.
+bool IncompleteCholesky::try_factorise(const SparseMatrix& K, double s, const Eigen::VectorXd& d,
+                                       const std::vector<char>& fixed, double shift) {
+  const int n = static_cast<int>(row_start_.size()) - 1;
+  for (int i = 0; i < n; ++i) {
+    const int begin = row_start_[i], diagonal = row_start_[i + 1] - 1;
+    const double* k = K.valuePtr() + outer_[i] - begin;  // k[p]: K's value of L's entry p
+    if (fixed[i]) {
+      for (int p = begin; p < diagonal; ++p) value_[p] = 0.0;
+      value_[diagonal] = 1.0;
+      continue;
+    }
+    for (int p = begin; p < diagonal; ++p) {
+      value_[p] = fixed[column(i, p)] ? 0.0 : s * k[p];
+      marker_[column(i, p)] = p;
+    }
+    for (int p = begin; p < diagonal; ++p) {
+      const int j = column(i, p);
+      double sum = value_[p];
+      for (int q = row_start_[j]; q < row_start_[j + 1] - 1; ++q) {
+        const int m = marker_[column(j, q)];
+        if (m >= 0 && m < p) sum -= value_[m] * value_[q];
+      }
+      value_[p] = sum / value_[row_start_[j + 1] - 1];
+    }
+    double pivot = (d[i] + s * k[diagonal]) * (1.0 + shift);
+    for (int p = begin; p < diagonal; ++p) {
+      pivot -= value_[p] * value_[p];
+      marker_[column(i, p)] = -1;
+    }
+    if (!(pivot > 0.0)) return false;
+    value_[diagonal] = std::sqrt(pivot);
+  }
+  return true;
+}
+
+void IncompleteCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  const int n = static_cast<int>(row_start_.size()) - 1;
+  z = r;
+  for (int i = 0; i < n; ++i) {  // L y = r
+    double sum = z[i];
+    const int diagonal = row_start_[i + 1] - 1;
+    for (int p = row_start_[i]; p < diagonal; ++p) sum -= value_[p] * z[column(i, p)];
+    z[i] = sum / value_[diagonal];
+  }
+  for (int i = n - 1; i >= 0; --i) {  // L^T z = y, by rows of L
+    const int diagonal = row_start_[i + 1] - 1;
+    const double z_i = z[i] / value_[diagonal];
+    z[i] = z_i;
+    for (int p = row_start_[i]; p < diagonal; ++p) z[column(i, p)] -= value_[p] * z_i;
+  }
+}
+
+}  // namespace flotsam
