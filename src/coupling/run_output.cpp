@@ -19,7 +19,8 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
                      const Mesh& mesh, const RunLayout& layout, bool overwrite,
                      const std::string& case_file, const std::vector<ProtectedInput>& inputs,
                      const std::filesystem::path& shared_folder, PvdWriter::Start indexes)
-    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs)),
+    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs,
+                                          shared_folder)),
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
