@@ -11,7 +11,9 @@
 #                    other members complete
 #   shared_flow      in one-way mode the members replay one flow computed once: the summary,
 #                    tables and every member's body tracks are those of members that compute
-#                    their own flow (--no-shared-flow), byte for byte; the flow's file is removed
+#                    their own flow (--no-shared-flow), byte for byte; the flow's file is removed;
+#                    the flow fields and folder markers are links to one copy; a member rerun
+#                    with `flotsam run` writes the same fields, tracks and .pvd indexes
 #   discharge_varies an ensemble varying discharge_scale does not share its flow
 #   member_restart   a member's folder continues with `flotsam run --restart --end` from the
 #                    checkpoint of its end, as a run of the longer time from the start writes it
@@ -81,6 +83,8 @@ case $mode in
     # rerun alone with `flotsam run` (computing its own flow) writes the same bytes.
     [ "$(stat -c %h shared/member_0001/flow_000001.vtu)" = 4 ] \
         || { echo "FAIL: the flow fields are not linked"; exit 1; }
+    [ "$(stat -c %h shared/member_0001/.flotsam-output)" = 4 ] \
+        || { echo "FAIL: the folders' markers are not linked"; exit 1; }
     "$flotsam" run shared/member_0001.yaml -o rerun --overwrite -q >/dev/null
     for f in flow_000000.vtu flow_000001.vtu flow_000002.vtu boundary.vtp member_0001_bodies.csv \
         member_0001.pvd member_0001_bodies.pvd; do
