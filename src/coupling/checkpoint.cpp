@@ -1,5 +1,6 @@
 // Simulation checkpoints: everything a run needs to continue bit for bit from an output time
-// (`flotsam run --restart`), written at every output as <output folder>/checkpoint.bin, a binary
+// (`flotsam run --restart`), written at every output (an ensemble's member: not at its start,
+// RunOptions::rerun_whole) as <output folder>/checkpoint.bin, a binary
 // archive of named arrays (io/binary_archive.hpp: each record with its length and checksum):
 //
 //   run       the case's settings (io/case_digest.hpp) and the mesh's checksum, then time, step

@@ -18,13 +18,14 @@ namespace flotsam {
 RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& name,
                      const Mesh& mesh, const RunLayout& layout, bool overwrite,
                      const std::string& case_file, const std::vector<ProtectedInput>& inputs,
-                     const std::filesystem::path& shared_folder)
-    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs)),
+                     const std::filesystem::path& shared_folder, PvdWriter::Start indexes)
+    : directory_(prepare_output_directory(directory.string(), overwrite, case_file, inputs,
+                                          shared_folder)),
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
-      flow_index_((directory_ / (name + ".pvd")).string(), PvdWriter::Start::at_first_add),
-      body_index_((directory_ / (name + "_bodies.pvd")).string(), PvdWriter::Start::at_first_add),
+      flow_index_((directory_ / (name + ".pvd")).string(), indexes),
+      body_index_((directory_ / (name + "_bodies.pvd")).string(), indexes),
       shared_folder_(shared_folder) {
   const auto write_boundary = [&](const std::string& path) { write_boundary_vtp(path, mesh); };
   if (shared_folder_.empty())
@@ -97,6 +98,11 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
     if (open_group_[g]) row.push_back(b.group_outflow[g]);
   balance_->row(row);
   times_.push_back(t);
+}
+
+void RunOutput::close() {
+  flow_index_.close();
+  body_index_.close();
 }
 
 void RunOutput::write_coordinate_system(const std::string& wkt) const {

@@ -42,11 +42,13 @@ class RunOutput {
   /// `shared_folder` (or ""): the runs replaying one shared flow (coupling/shared_flow.hpp) have
   /// the same mesh and write the same boundary.vtp, and the same flow_NNNNNN.vtu at the same
   /// time: each is written once into that folder (the fields named by their time) and linked
-  /// into the folder of every run after (io/shared_file.hpp).
+  /// into the folder of every run after (io/shared_file.hpp). `indexes`: when the .pvd indexes
+  /// are written (PvdWriter::Start): after each output from the first, or once by close().
   RunOutput(const std::filesystem::path& directory, const std::string& name, const Mesh& mesh,
             const RunLayout& layout, bool overwrite, const std::string& case_file,
             const std::vector<ProtectedInput>& inputs,
-            const std::filesystem::path& shared_folder = {});
+            const std::filesystem::path& shared_folder = {},
+            PvdWriter::Start indexes = PvdWriter::Start::at_first_add);
 
   /// Continues the output of a run in `directory` (a restart from the checkpoint at
   /// `resume_time` [s]): the indexes list again the `times` already written, the tables are
@@ -61,6 +63,10 @@ class RunOutput {
   /// `jammed`: one flag per body (bodies in a jam, spec 6.3), or empty.
   void write(double t, const FlowEngine& flow, const BodySet& bodies, bool with_bodies,
              const std::vector<std::uint8_t>& jammed);
+
+  /// The run has ended: indexes written only when closed are written now (an output after it is
+  /// an error).
+  void close();
 
   /// From now on every output also writes the flood envelopes as rasters on `grid`.
   void write_rasters_on(const RasterGrid& grid) { raster_grid_ = grid; }
@@ -84,7 +90,7 @@ class RunOutput {
   std::string name_;
   std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
   bool rain_ = false;                     // the balance table has rain and infiltration columns
-  PvdWriter flow_index_, body_index_;     // each written from its first file on
+  PvdWriter flow_index_, body_index_;     // from the first file on, or when closed
   std::vector<double> times_;             // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;
   std::filesystem::path shared_folder_;  // or ""

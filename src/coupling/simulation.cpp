@@ -232,7 +232,9 @@ void Simulation::write_output_if_due(bool force) {
   }
   output_->write(time_, *flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
-  write_checkpoint((output_->directory() / "checkpoint.bin").string());
+  // A run rerun whole when interrupted has no use for a checkpoint of its start.
+  if (!options_.rerun_whole || step_count_ > 0)
+    write_checkpoint((output_->directory() / "checkpoint.bin").string());
   flow_->after_checkpoint();  // as a run restarted from this checkpoint does
   if (reference_flow_) reference_flow_->after_checkpoint();
 }
@@ -241,14 +243,16 @@ void Simulation::open_output(const std::vector<double>* output_times) {
   if (!options_.write_output) return;
   std::vector<ProtectedInput> inputs;  // never deleted by --overwrite
   for (const InputFile& input : case_.input_files) inputs.emplace_back(input.key, input.path);
-  output_ = output_times
-                ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
-                                              *output_times, has_bodies_, time_)
-                : std::make_unique<RunOutput>(
-                      output_directory(), case_.name, mesh_, run_layout(),
-                      options_.overwrite || case_.output.overwrite, case_.file, inputs,
-                      shared_flow_ ? shared_fields_folder(shared_flow_->path())
-                                   : std::filesystem::path());
+  output_ =
+      output_times
+          ? std::make_unique<RunOutput>(output_directory(), case_.name, mesh_, run_layout(),
+                                        *output_times, has_bodies_, time_)
+          : std::make_unique<RunOutput>(
+                output_directory(), case_.name, mesh_, run_layout(),
+                options_.overwrite || case_.output.overwrite, case_.file, inputs,
+                shared_flow_ ? shared_fields_folder(shared_flow_->path()) : std::filesystem::path(),
+                options_.rerun_whole ? PvdWriter::Start::when_closed
+                                     : PvdWriter::Start::at_first_add);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
   if (case_.output.raster_resolution <= 0.0) return;
@@ -275,8 +279,10 @@ void Simulation::run() {
 }
 
 void Simulation::write_final_output() {
-  if (output_ && output_->times().back() < time_)
+  if (!output_) return;
+  if (output_->times().back() < time_)
     write_output_if_due(true);  // the final state, when the last interval was not complete
+  output_->close();
 }
 
 JamStatistics Simulation::jam_statistics() const {

@@ -46,6 +46,12 @@ struct RunOptions {
   /// What the run may take ready-made (prepare_mesh_setup on a mesh equal to the run's, which
   /// outlives it; coupling/mesh_setup.hpp), or nullptr: built by the run.
   std::shared_ptr<const MeshSetup> mesh_setup = nullptr;
+  /// A run that is rerun from its start when interrupted (an ensemble's member, whose folder
+  /// without member.txt is run again): its .pvd indexes are written once, when it ends
+  /// (write_final_output; a run stopped by an error too), not rewritten at every output, and it
+  /// writes no checkpoint at its start, only at its later outputs (a restart still continues it
+  /// from its last one). Fewer files written and replaced (docs/performance.md, "Ensembles").
+  bool rerun_whole = false;
 };
 
 class Simulation {

@@ -74,7 +74,8 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
                              .write_output = true,
                              .progress = false,
                              .shared_flow = setup.shared_flow,
-                             .mesh_setup = setup.mesh_setup};
+                             .mesh_setup = setup.mesh_setup,
+                             .rerun_whole = true};
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);

@@ -2,8 +2,9 @@
 // Runs one member of an ensemble as an ordinary run: its case file written beside its folder
 // (DIR/member_NNNN.yaml, results in DIR/member_NNNN/), the case read back from that text as
 // `flotsam run` reads it, the run stepped to its end with the blocking monitor sampling the jam
-// statistics, and member.txt written last. A member that fails (its case refused, its run
-// stopped) returns a result marked failed with the message; it never throws.
+// statistics, and member.txt written last. A member without member.txt is run again whole when
+// the ensemble resumes: it runs with RunOptions::rerun_whole. A member that fails (its case
+// refused, its run stopped) returns a result marked failed with the message; it never throws.
 #include <filesystem>
 #include <memory>
 #include <string>

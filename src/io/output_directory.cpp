@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/shared_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -60,17 +61,24 @@ bool holds_only_marker(const fs::path& folder) {
   return true;
 }
 
-void write_marker(const fs::path& folder) {
-  std::ofstream marker(folder / output_marker);
-  marker << "flotsam output folder: `flotsam run --overwrite` may delete everything in it.\n";
-  if (!marker) throw_input_error("cannot write in output folder '{}'", folder.string());
+void write_marker(const fs::path& folder, const fs::path& shared_folder) {
+  const auto write = [&](const std::string& path) {
+    std::ofstream marker(path);
+    marker << "flotsam output folder: `flotsam run --overwrite` may delete everything in it.\n";
+    if (!marker) throw_input_error("cannot write in output folder '{}'", folder.string());
+  };
+  if (shared_folder.empty())
+    write((folder / output_marker).string());
+  else
+    write_shared_file(shared_folder, output_marker, folder / output_marker, write);
 }
 
 }  // namespace
 
 fs::path prepare_output_directory(const std::string& directory, bool overwrite,
                                   const std::string& case_file,
-                                  const std::vector<ProtectedInput>& inputs) {
+                                  const std::vector<ProtectedInput>& inputs,
+                                  const fs::path& shared_folder) {
   if (directory.empty()) throw_input_error("output folder: the name is empty");
   const fs::path folder = resolved(directory);
   refuse_dangerous(directory, folder, case_file, inputs);
@@ -101,7 +109,7 @@ fs::path prepare_output_directory(const std::string& directory, bool overwrite,
                           entry.path().string(), error.message());
     }
   }
-  write_marker(folder);
+  write_marker(folder, shared_folder);
   return folder;
 }
 

@@ -26,9 +26,11 @@ using ProtectedInput = std::pair<std::string, std::string>;
 
 /// Applies the policy above and returns the folder's absolute path. `case_file` ("" when the
 /// case was built in code) and `inputs` are protected from deletion. Throws InputError with the
-/// reason and the way out.
+/// reason and the way out. `shared_folder` (or ""): runs sharing files (io/shared_file.hpp) get
+/// the marker as a link to one copy there (one file fewer to create per run).
 std::filesystem::path prepare_output_directory(const std::string& directory, bool overwrite,
                                                const std::string& case_file = "",
-                                               const std::vector<ProtectedInput>& inputs = {});
+                                               const std::vector<ProtectedInput>& inputs = {},
+                                               const std::filesystem::path& shared_folder = {});
 
 }  // namespace flotsam

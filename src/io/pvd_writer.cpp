@@ -2,17 +2,33 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "io/vtk_xml.hpp"
 
 namespace flotsam {
 
-PvdWriter::PvdWriter(std::string path, Start start) : path_(std::move(path)) {
+PvdWriter::PvdWriter(std::string path, Start start) : path_(std::move(path)), start_(start) {
   if (start == Start::empty_now) write();
 }
 
+PvdWriter::~PvdWriter() {
+  try {
+    close();
+  } catch (const std::exception&) {  // a destructor cannot report it; close() does
+  }
+}
+
 void PvdWriter::add(double time, const std::string& relative_file, int part) {
+  if (closed_) throw std::logic_error("PvdWriter::add after close: " + path_);
   entries_.push_back({time, relative_file, part});
-  write();
+  if (start_ != Start::when_closed) write();
+}
+
+void PvdWriter::close() {
+  if (closed_ || path_.empty()) return;
+  closed_ = true;
+  if (start_ == Start::when_closed && !entries_.empty()) write();
 }
 
 void PvdWriter::write() const {

@@ -16,6 +16,7 @@
 #include <numbers>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -408,6 +409,42 @@ TEST(PvdWriter, IndexIsValidAfterEveryAdd) {
             head + "  <DataSet timestep=\"5\" group=\"\" part=\"0\" file=\"flow_000001.vtu\"/>\n" +
                 "  <DataSet timestep=\"5\" group=\"\" part=\"1\" file=\"bodies_000001.vtp\"/>\n" +
                 tail);  // the time round-trips exactly
+  EXPECT_FALSE(fs::exists(path.string() + ".part"));
+}
+
+// An index written when closed (an ensemble's member): no file before, one listing every
+// dataset after, nothing when nothing was added; the destructor closes an index left open.
+TEST(PvdWriter, IndexWrittenWhenClosed) {
+  const fs::path dir = scratch_folder();
+  const std::string head =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "<Collection>\n";
+  const std::string listed =
+      "  <DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"flow_000000.vtu\"/>\n"
+      "  <DataSet timestep=\"240\" group=\"\" part=\"0\" file=\"flow_000001.vtu\"/>\n";
+  const std::string tail = "</Collection>\n</VTKFile>\n";
+  const fs::path path = dir / "flow.pvd";
+  PvdWriter pvd(path.string(), PvdWriter::Start::when_closed);
+  pvd.add(0.0, "flow_000000.vtu");
+  pvd.add(240.0, "flow_000001.vtu");
+  EXPECT_FALSE(fs::exists(path));
+  pvd.close();
+  EXPECT_EQ(read_text(path), head + listed + tail);
+  EXPECT_THROW(pvd.add(480.0, "flow_000002.vtu"), std::logic_error);
+  pvd.close();  // once
+  EXPECT_EQ(read_text(path), head + listed + tail);
+  {
+    PvdWriter left_open((dir / "open.pvd").string(), PvdWriter::Start::when_closed);
+    left_open.add(0.0, "flow_000000.vtu");
+    left_open.add(240.0, "flow_000001.vtu");
+  }
+  EXPECT_EQ(read_text(dir / "open.pvd"), head + listed + tail);
+  {
+    PvdWriter empty((dir / "empty.pvd").string(), PvdWriter::Start::when_closed);
+    empty.close();
+  }
+  EXPECT_FALSE(fs::exists(dir / "empty.pvd"));
   EXPECT_FALSE(fs::exists(path.string() + ".part"));
 }
 

@@ -2,7 +2,8 @@
 # the shared flow
 # (tests/scripts/ensemble_check.sh says what each checks).
 set(ensemble_work ${CMAKE_CURRENT_BINARY_DIR}/ensemble_work)
-set(ensemble_modes reference jobs2 resume failing_member shared_flow discharge_varies)
+set(ensemble_modes reference jobs2 resume failing_member shared_flow discharge_varies member_restart
+                   killed)
 find_program(FLOTSAM_MPIRUN mpirun)
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
   list(APPEND ensemble_modes mpirun2)
@@ -14,9 +15,10 @@ foreach(mode ${ensemble_modes})
                    ${ensemble_work})
   set_tests_properties(cli.ensemble_${mode} PROPERTIES LABELS "cli"
                        ENVIRONMENT "${test_environment}")
-  if(mode MATCHES "^(jobs2|resume|mpirun2)$")
+  if(mode MATCHES "^(jobs2|resume|mpirun2|member_restart)$")
     set_tests_properties(cli.ensemble_${mode} PROPERTIES FIXTURES_REQUIRED cli_ensemble_reference
                          RESOURCE_LOCK ensemble_work)
   endif()
 endforeach()
 set_tests_properties(cli.ensemble_reference PROPERTIES FIXTURES_SETUP cli_ensemble_reference)
+set_tests_properties(cli.ensemble_killed PROPERTIES SKIP_RETURN_CODE 77)

@@ -11,8 +11,17 @@
 #                    other members complete
 #   shared_flow      in one-way mode the members replay one flow computed once: the summary,
 #                    tables and every member's body tracks are those of members that compute
-#                    their own flow (--no-shared-flow), byte for byte; the flow's file is removed
+#                    their own flow (--no-shared-flow), byte for byte; the flow's file is removed;
+#                    the flow fields and folder markers are links to one copy; a member rerun
+#                    with `flotsam run` writes the same fields, tracks and .pvd indexes
 #   discharge_varies an ensemble varying discharge_scale does not share its flow
+#   member_restart   a member's folder continues with `flotsam run --restart --end` from the
+#                    checkpoint of its end, as a run of the longer time from the start writes it
+#   killed           an ensemble replaying a shared flow, killed (SIGKILL) once its first member
+#                    is complete, resumes to the summary and tables of an uninterrupted one: the
+#                    complete members kept, the others (one half-written) run again, each
+#                    member's .pvd index listing the fields it wrote (skipped, code 77, when the
+#                    kill came after the last member)
 set -euo pipefail
 mode=$1 flotsam=$2 case=$3 work=$4
 mkdir -p "$work" && cd "$work"
@@ -74,11 +83,56 @@ case $mode in
     # rerun alone with `flotsam run` (computing its own flow) writes the same bytes.
     [ "$(stat -c %h shared/member_0001/flow_000001.vtu)" = 4 ] \
         || { echo "FAIL: the flow fields are not linked"; exit 1; }
+    [ "$(stat -c %h shared/member_0001/.flotsam-output)" = 4 ] \
+        || { echo "FAIL: the folders' markers are not linked"; exit 1; }
     "$flotsam" run shared/member_0001.yaml -o rerun --overwrite -q >/dev/null
-    for f in flow_000000.vtu flow_000001.vtu flow_000002.vtu boundary.vtp member_0001_bodies.csv; do
+    for f in flow_000000.vtu flow_000001.vtu flow_000002.vtu boundary.vtp member_0001_bodies.csv \
+        member_0001.pvd member_0001_bodies.pvd; do
       cmp "rerun/$f" "shared/member_0001/$f" || { echo "FAIL: rerun/$f differs"; exit 1; }
     done
     echo "shared flow: same summary, tables and tracks; linked fields, as a rerun writes them" ;;
+  member_restart)
+    rm -rf restart longer && cp -r reference/member_0001 restart
+    "$flotsam" run reference/member_0001.yaml -o restart --restart --end 18 -q >/dev/null
+    "$flotsam" run reference/member_0001.yaml -o longer --overwrite --end 18 -q >/dev/null
+    grep -q 'timestep="18"' restart/member_0001.pvd || { echo "FAIL: no output at 18 s"; exit 1; }
+    for f in member_0001.pvd member_0001_bodies.pvd member_0001_bodies.csv member_0001_jams.csv \
+        flow_000003.vtu bodies_000003.vtp; do
+      cmp "longer/$f" "restart/$f" || { echo "FAIL: restart/$f differs"; exit 1; }
+    done
+    echo "a member continued from its checkpoint writes what the longer run writes" ;;
+  killed)
+    # 10 members per value (20): the kill lands among them
+    sed -e 's/mode: two-way/mode: one-way/' -e 's/  members: 2$/  members: 10/' "$case" > killed.yaml
+    grep -q "members: 10" killed.yaml
+    rm -rf whole killed
+    "$flotsam" ensemble killed.yaml -o whole -q --no-pictures >/dev/null
+    "$flotsam" ensemble killed.yaml -o killed -q --no-pictures >/dev/null 2>&1 &
+    pid=$!
+    for _ in $(seq 3000); do [ -e killed/member_0000/member.txt ] && break; sleep 0.01; done
+    kill -9 "$pid" 2>/dev/null || true
+    wait "$pid" || true
+    complete=$(ls killed/member_*/member.txt 2>/dev/null | wc -l)
+    [ "$complete" -lt 20 ] || { echo "the kill came after the last member"; exit 77; }
+    out=$("$flotsam" ensemble killed.yaml -o killed -q --no-pictures)
+    echo "$out" | grep -q "ran $((20 - complete)) members, kept $complete" \
+        || { echo "FAIL: $out"; exit 1; }
+    for f in ensemble_summary.txt ensemble_members.csv ensemble_blocking.csv ensemble_bodies.csv; do
+      # (a failed member's message names its case file, in its own folder)
+      cmp "whole/$f" <(sed "s|$work/killed/|$work/whole/|g" "killed/$f") \
+          || { echo "FAIL: killed/$f differs after resuming"; exit 1; }
+    done
+    for m in killed/member_00??; do
+      m=$(basename "$m")
+      cmp "whole/$m/${m}_bodies.csv" "killed/$m/${m}_bodies.csv" \
+          || { echo "FAIL: $m's tracks differ"; exit 1; }
+      # its index lists every flow field it wrote (a failed member's too, up to its failure)
+      [ "$(grep -c '<DataSet' "killed/$m/$m.pvd")" = "$(ls killed/$m/flow_*.vtu | wc -l)" ] \
+          || { echo "FAIL: $m's index"; exit 1; }
+      grep -q "status failed" "killed/$m/member.txt" || grep -q 'timestep="12"' "killed/$m/$m.pvd" \
+          || { echo "FAIL: $m's index ends before 12 s"; exit 1; }
+    done
+    echo "killed with $complete of 20 members complete; resumed to the same summary" ;;
   discharge_varies)
     sed -e 's/mode: two-way/mode: one-way/' \
         -e 's/inflow: {type: elevation, value: 4.0}/inflow: {type: discharge, value: 240}/' \
