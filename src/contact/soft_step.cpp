@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "contact/restitution_energy.hpp"
 
@@ -12,8 +13,8 @@ namespace {
 
 constexpr double max_push_speed = 3.0;       // v_max [m/s] (S-2): fastest push-out of an overlap
 constexpr double max_hertz_per_rate = 0.25;  // f at most this fraction of the sub-step rate [-]
-// [-] Threads pay off from a few thousand contacts: each sub-step waits for the threads 3 times
-// per colour, and a colour of a few hundred contacts is solved in microseconds.
+// [-] Threads pay off from a few thousand contacts: each sub-step waits for the threads twice per
+// colour and once more, and a colour of a few hundred contacts is solved in microseconds.
 constexpr std::size_t parallel_contacts = 2000;
 
 // Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
@@ -40,11 +41,12 @@ Vec2 rotate(const Vec2& q, const Vec2& r) {  // R(Theta) r with q = (cos Theta, 
 
 // Runs f(contact) over every contact, colour after colour; inside a parallel region, the
 // contacts of a colour are shared among the threads (none shares a movable body with another),
-// the overflow's taken by one thread.
+// the overflow's taken by one thread. The threads meet once per colour.
 template <class F>
 void SoftStep::each_colour(F&& f) {
   for (int g = 0; g < colours_.groups(); ++g) {
     const int begin = colours_.start(g), end = colours_.start(g + 1);
+    if (begin == end) continue;  // an empty overflow: no meeting of the threads
     if (colours_.is_overflow(g)) {
 #pragma omp single
       for (int k = begin; k < end; ++k) f(soft_[static_cast<std::size_t>(k)]);
@@ -65,45 +67,38 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
 #pragma omp parallel if (contacts.size() >= parallel_contacts)
   {
     for (int k = 0; k < substeps; ++k) {
+      // This sub-step's share of the forces' velocity, and the warm start, body by body.
 #pragma omp for schedule(static)
-      for (int m = 0; m < moving; ++m) {  // this sub-step's share of the forces' velocity
-        const int i = moving_[static_cast<std::size_t>(m)];
-        velocity_[i] += gain_[i];
-        spin_[i] += spin_gain_[i];
-      }
-      each_colour([&](Contact& c) { warm_start(c, k); });
+      for (int m = 0; m < moving; ++m) warm_start(moving_[static_cast<std::size_t>(m)]);
       each_colour([&](Contact& c) { solve_contact(c, true); });
-#pragma omp for schedule(static)
-      for (int m = 0; m < moving; ++m) {  // the poses move by h_s u; (cos, sin) turned
-        const int i = moving_[static_cast<std::size_t>(m)];
-        const double h = step_[i], turn = h * spin_[i];  // [s], [rad]
-        shift_[i] += h * velocity_[i];
-        turn_[i] += turn;
-        const Vec2 q = rotation_[i] + turn * perp(rotation_[i]);
-        rotation_[i] = q / q.norm();
-      }
       each_colour([&](Contact& c) {
+        if (c.first_of_a) move_pose(c.a);  // before any contact of the body reads its pose
+        if (c.first_of_b) move_pose(c.b);
         solve_contact(c, false);
         for (int p = 0; p < c.count; ++p) {  // this sub-step's impulses join the interval's
           Point& q = c.points[static_cast<std::size_t>(p)];
           q.total_normal += q.normal_impulse;
           q.total_tangent += q.tangent_impulse;
           if (k == 0) q.first = {q.normal_impulse, q.tangent_impulse};
+          // Sub-step 1 starts from the last interval's last sub-step.
+          if (k == 0 && substeps > 1)
+            q.normal_impulse = q.later.x(), q.tangent_impulse = q.later.y();
         }
       });
     }
-#pragma omp single
-    for (std::size_t m = 0; m < moving_.size(); ++m)  // after the compression
-      mid_velocity_[m] = velocity_[moving_[m]], mid_spin_[m] = spin_[moving_[m]];
     double worst = 0.0;  // [m]
-    each_colour([&](Contact& c) { worst = std::max(worst, restitute(c)); });
+    each_colour([&](Contact& c) {
+      for (const auto& [first, i] : {std::pair{c.first_of_a, c.a}, std::pair{c.first_of_b, c.b}})
+        if (first) mid_velocity_[i] = velocity_[i], mid_spin_[i] = spin_[i];  // before restitution
+      worst = std::max(worst, restitute(c));
+    });
 #pragma omp critical
     largest = std::max(largest, worst);
   }
   largest_overlap_ = largest;
   bound_restitution();
   store(contacts, bodies);
-  return 2 * substeps;
+  return contacts.empty() ? 0 : 2 * substeps;
 }
 
 // Flat copies of the contacts in colour order, with their soft coefficients (S-2), and of the
@@ -193,9 +188,27 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       q.resting = s.resting;
     }
   }
+  // Each movable body's contacts in colour order (2 k for side A of soft_[k], 2 k + 1 for B), and
+  // which contact is its first.
+  touching_start_.assign(slots + 1, 0);
+  for (const Contact& c : soft_) {
+    if (movable_[c.a]) ++touching_start_[c.a + 1];
+    if (movable_[c.b]) ++touching_start_[c.b + 1];
+  }
+  std::partial_sum(touching_start_.begin(), touching_start_.end(), touching_start_.begin());
+  touching_.resize(static_cast<std::size_t>(touching_start_.back()));
+  std::vector<int> next(touching_start_.begin(), touching_start_.end() - 1);
+  for (std::size_t k = 0; k < soft_.size(); ++k) {
+    Contact& c = soft_[k];
+    const int ref = 2 * static_cast<int>(k);
+    c.first_of_a = movable_[c.a] && next[c.a] == touching_start_[c.a];
+    c.first_of_b = movable_[c.b] && next[c.b] == touching_start_[c.b];
+    if (movable_[c.a]) touching_[static_cast<std::size_t>(next[c.a]++)] = ref;
+    if (movable_[c.b]) touching_[static_cast<std::size_t>(next[c.b]++)] = ref + 1;
+  }
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
-  mid_velocity_.resize(moving_.size()), mid_spin_.resize(moving_.size());
+  mid_velocity_.resize(slots), mid_spin_.resize(slots);
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
     saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
@@ -203,24 +216,40 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   }
 }
 
-// Sub-step 0 starts from the first sub-step's impulses of the last interval (it takes the
-// velocity the forces gave over the whole interval), sub-step 1 from the last sub-step's, the
-// later ones from the sub-step before.
-void SoftStep::warm_start(Contact& c, int substep) {
-  Vec2 va = velocity_[c.a], vb = velocity_[c.b];
-  double wa = spin_[c.a], wb = spin_[c.b];
-  const Vec2 tangent = -perp(c.normal);
-  for (int p = 0; p < c.count; ++p) {
-    Point& q = c.points[static_cast<std::size_t>(p)];
-    if (substep == 1) q.normal_impulse = q.later.x(), q.tangent_impulse = q.later.y();
-    const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
-    va += inverse_mass_[c.a] * P;
-    wa += inverse_inertia_[c.a] * cross(q.r_a, P);
-    vb -= inverse_mass_[c.b] * P;
-    wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
+// Body i's velocity at the start of a sub-step: its share of the forces' velocity, then the
+// impulses its contacts start from (sub-step 0: the first sub-step's of the last interval, which
+// took the forces' velocity of the whole interval; sub-step 1: the last sub-step's; the later
+// ones: the sub-step before), in colour order, as a sweep over the colours would add them.
+void SoftStep::warm_start(int i) {
+  Vec2 v = velocity_[i] + gain_[i];
+  double w = spin_[i] + spin_gain_[i];
+  const double im = inverse_mass_[i], ii = inverse_inertia_[i];
+  for (int r = touching_start_[i]; r < touching_start_[i + 1]; ++r) {
+    const int ref = touching_[static_cast<std::size_t>(r)];
+    const Contact& c = soft_[static_cast<std::size_t>(ref >> 1)];
+    const Vec2 tangent = -perp(c.normal);
+    for (int p = 0; p < c.count; ++p) {
+      const Point& q = c.points[static_cast<std::size_t>(p)];
+      const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
+      if ((ref & 1) == 0) {
+        v += im * P;
+        w += ii * cross(q.r_a, P);
+      } else {
+        v -= im * P;
+        w -= ii * cross(q.r_b, P);
+      }
+    }
   }
-  if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
-  if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
+  velocity_[i] = v, spin_[i] = w;
+}
+
+// Body i's pose moves by h_s u; (cos, sin) turned.
+void SoftStep::move_pose(int i) {
+  const double h = step_[i], turn = h * spin_[i];  // [s], [rad]
+  shift_[i] += h * velocity_[i];
+  turn_[i] += turn;
+  const Vec2 q = rotation_[i] + turn * perp(rotation_[i]);
+  rotation_[i] = q / q.norm();
 }
 
 // One iteration over the points of a contact: normal impulses (S-2), then friction.
@@ -302,16 +331,16 @@ void SoftStep::bound_restitution() {
     const int i = moving_[m];
     const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
     before += solver_kinetic_energy(saved_velocity_[m], saved_spin_[m], w, w_i);
-    mid += solver_kinetic_energy(mid_velocity_[m], mid_spin_[m], w, w_i);
+    mid += solver_kinetic_energy(mid_velocity_[i], mid_spin_[i], w, w_i);
     end += solver_kinetic_energy(velocity_[i], spin_[i], w, w_i);
-    change.add(mid_velocity_[m], mid_spin_[m], velocity_[i], spin_[i], w, w_i);
+    change.add(mid_velocity_[i], mid_spin_[i], velocity_[i], spin_[i], w, w_i);
   }
   if (end <= before * (1.0 + round_off)) return;
   const double s = change.fraction(before, mid, config_.restitution);  // [-]
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
-    velocity_[i] = mid_velocity_[m] + s * (velocity_[i] - mid_velocity_[m]);
-    spin_[i] = mid_spin_[m] + s * (spin_[i] - mid_spin_[m]);
+    velocity_[i] = mid_velocity_[i] + s * (velocity_[i] - mid_velocity_[i]);
+    spin_[i] = mid_spin_[i] + s * (spin_[i] - mid_spin_[i]);
   }
 }
 

@@ -78,6 +78,7 @@ class SoftStep final : public ContactSolver {
     double bias_rate = 0.0;                            // b [1/s]
     double mass_scale = 1.0, impulse_scale = 0.0;      // a/(1+a), 1/(1+a) [-]
     bool use_block = false;                            // two points relaxed and restituted at once
+    bool first_of_a = false, first_of_b = false;       // the body's first contact in colour order
     Mat2 K = Mat2::Zero(), block_mass = Mat2::Zero();  // [1/kg], K^-1 [kg]
     std::array<Point, 2> points;
   };
@@ -88,7 +89,8 @@ class SoftStep final : public ContactSolver {
                const BodyVelocities& start);
   void store(std::vector<ContactConstraint>& contacts, BodySet& bodies);
   void solve_contact(Contact& c, bool bias);
-  void warm_start(Contact& c, int substep);
+  void warm_start(int body);
+  void move_pose(int body);
   double restitute(Contact& c);
   void bound_restitution();
   template <class F>
@@ -106,10 +108,13 @@ class SoftStep final : public ContactSolver {
   std::vector<double> inverse_mass_, inverse_inertia_;
   std::vector<char> movable_;
   std::vector<int> moving_;  // movable bodies in contact
+  // The contacts of each body slot, in colour order: touching_[touching_start_[i] ...
+  // touching_start_[i + 1] - 1] = 2 k (side A of soft_[k]) or 2 k + 1 (side B).
+  std::vector<int> touching_start_, touching_;
   // What undo() puts back.
   std::vector<Vec2> saved_position_, saved_velocity_;
   std::vector<double> saved_angle_, saved_spin_;
-  // The velocities after the compression, before restitution (per moving_ body).
+  // The velocities after the compression, before restitution (per body slot).
   std::vector<Vec2> mid_velocity_;
   std::vector<double> mid_spin_;
   double largest_overlap_ = 0.0;  // [m]
