@@ -1,6 +1,7 @@
 #include "contact/soft_step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -64,7 +65,9 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
   const int substeps = config_.substeps;
   const int moving = static_cast<int>(moving_.size());
   double largest = 0.0;  // [m] overlap at the end
-#pragma omp parallel if (contacts.size() >= parallel_contacts)
+  const bool threads = contacts.size() >= parallel_contacts && choice_.threads();
+  const auto start_time = std::chrono::steady_clock::now();
+#pragma omp parallel if (threads)
   {
     for (int k = 0; k < substeps; ++k) {
       // This sub-step's share of the forces' velocity, and the warm start, body by body.
@@ -95,6 +98,11 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
 #pragma omp critical
     largest = std::max(largest, worst);
   }
+  if (contacts.size() >= parallel_contacts)
+    choice_.record(
+        threads,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(),
+        static_cast<double>(contacts.size()));
   largest_overlap_ = largest;
   bound_restitution();
   store(contacts, bodies);

@@ -36,6 +36,7 @@
 // colours' contacts in parallel: the same result on any number of threads.
 #include "contact/contact_colours.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/thread_choice.hpp"
 
 namespace flotsam {
 
@@ -98,6 +99,7 @@ class SoftStep final : public ContactSolver {
 
   ContactConfig config_;
   ContactColours colours_;
+  ThreadChoice choice_;  // whether the colours are shared among the threads (same bits either way)
   std::vector<Contact> soft_;  // in colour order
   std::vector<int> source_;    // soft_[k] is contacts[source_[k]]
   // Per body slot (bodies.size() + 1, the last a wall): velocity, pose from the detected one.
