@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 
 #include "contact/restitution_energy.hpp"
 
@@ -63,16 +62,13 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
                     const std::vector<double>& intervals, const BodyVelocities& start) {
   prepare(contacts, bodies, masses, intervals, start);
   const int substeps = config_.substeps;
-  const int moving = static_cast<int>(moving_.size());
   double largest = 0.0;  // [m] overlap at the end
   const bool threads = contacts.size() >= parallel_contacts && choice_.threads();
   const auto start_time = std::chrono::steady_clock::now();
 #pragma omp parallel if (threads)
   {
     for (int k = 0; k < substeps; ++k) {
-      // This sub-step's share of the forces' velocity, and the warm start, body by body.
-#pragma omp for schedule(static)
-      for (int m = 0; m < moving; ++m) warm_start(moving_[static_cast<std::size_t>(m)]);
+      each_colour([&](Contact& c) { warm_start(c); });
       each_colour([&](Contact& c) { solve_contact(c, true); });
       each_colour([&](Contact& c) {
         if (c.first_of_a) move_pose(c.a);  // before any contact of the body reads its pose
@@ -196,23 +192,12 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       q.resting = s.resting;
     }
   }
-  // Each movable body's contacts in colour order (2 k for side A of soft_[k], 2 k + 1 for B), and
-  // which contact is its first.
-  touching_start_.assign(slots + 1, 0);
-  for (const Contact& c : soft_) {
-    if (movable_[c.a]) ++touching_start_[c.a + 1];
-    if (movable_[c.b]) ++touching_start_[c.b + 1];
-  }
-  std::partial_sum(touching_start_.begin(), touching_start_.end(), touching_start_.begin());
-  touching_.resize(static_cast<std::size_t>(touching_start_.back()));
-  std::vector<int> next(touching_start_.begin(), touching_start_.end() - 1);
-  for (std::size_t k = 0; k < soft_.size(); ++k) {
-    Contact& c = soft_[k];
-    const int ref = 2 * static_cast<int>(k);
-    c.first_of_a = movable_[c.a] && next[c.a] == touching_start_[c.a];
-    c.first_of_b = movable_[c.b] && next[c.b] == touching_start_[c.b];
-    if (movable_[c.a]) touching_[static_cast<std::size_t>(next[c.a]++)] = ref;
-    if (movable_[c.b]) touching_[static_cast<std::size_t>(next[c.b]++)] = ref + 1;
+  // Each movable body's first contact in colour order.
+  std::fill(seen.begin(), seen.end(), 0);
+  for (Contact& c : soft_) {
+    c.first_of_a = movable_[c.a] && !seen[c.a];
+    c.first_of_b = movable_[c.b] && !seen[c.b];
+    seen[c.a] = seen[c.b] = 1;
   }
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
@@ -224,31 +209,26 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   }
 }
 
-// Body i's velocity at the start of a sub-step: its share of the forces' velocity, then the
-// impulses its contacts start from (sub-step 0: the first sub-step's of the last interval, which
-// took the forces' velocity of the whole interval; sub-step 1: the last sub-step's; the later
-// ones: the sub-step before), in colour order, as a sweep over the colours would add them.
-void SoftStep::warm_start(int i) {
-  Vec2 v = velocity_[i] + gain_[i];
-  double w = spin_[i] + spin_gain_[i];
-  const double im = inverse_mass_[i], ii = inverse_inertia_[i];
-  for (int r = touching_start_[i]; r < touching_start_[i + 1]; ++r) {
-    const int ref = touching_[static_cast<std::size_t>(r)];
-    const Contact& c = soft_[static_cast<std::size_t>(ref >> 1)];
-    const Vec2 tangent = -perp(c.normal);
-    for (int p = 0; p < c.count; ++p) {
-      const Point& q = c.points[static_cast<std::size_t>(p)];
-      const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
-      if ((ref & 1) == 0) {
-        v += im * P;
-        w += ii * cross(q.r_a, P);
-      } else {
-        v -= im * P;
-        w -= ii * cross(q.r_b, P);
-      }
-    }
+// The impulses a contact starts a sub-step from (sub-step 0: the first sub-step's of the last
+// interval, which took the forces' velocity of the whole interval; sub-step 1: the last
+// sub-step's; the later ones: the sub-step before). At a body's first contact in colour order,
+// the body takes this sub-step's share of the forces' velocity first.
+void SoftStep::warm_start(Contact& c) {
+  Vec2 va = velocity_[c.a], vb = velocity_[c.b];
+  double wa = spin_[c.a], wb = spin_[c.b];
+  if (c.first_of_a) va += gain_[c.a], wa += spin_gain_[c.a];
+  if (c.first_of_b) vb += gain_[c.b], wb += spin_gain_[c.b];
+  const Vec2 tangent = -perp(c.normal);
+  for (int p = 0; p < c.count; ++p) {
+    const Point& q = c.points[static_cast<std::size_t>(p)];
+    const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
+    va += inverse_mass_[c.a] * P;
+    wa += inverse_inertia_[c.a] * cross(q.r_a, P);
+    vb -= inverse_mass_[c.b] * P;
+    wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
   }
-  velocity_[i] = v, spin_[i] = w;
+  if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
+  if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
 }
 
 // Body i's pose moves by h_s u; (cos, sin) turned.

@@ -90,7 +90,7 @@ class SoftStep final : public ContactSolver {
                const BodyVelocities& start);
   void store(std::vector<ContactConstraint>& contacts, BodySet& bodies);
   void solve_contact(Contact& c, bool bias);
-  void warm_start(int body);
+  void warm_start(Contact& c);
   void move_pose(int body);
   double restitute(Contact& c);
   void bound_restitution();
@@ -110,9 +110,6 @@ class SoftStep final : public ContactSolver {
   std::vector<double> inverse_mass_, inverse_inertia_;
   std::vector<char> movable_;
   std::vector<int> moving_;  // movable bodies in contact
-  // The contacts of each body slot, in colour order: touching_[touching_start_[i] ...
-  // touching_start_[i + 1] - 1] = 2 k (side A of soft_[k]) or 2 k + 1 (side B).
-  std::vector<int> touching_start_, touching_;
   // What undo() puts back.
   std::vector<Vec2> saved_position_, saved_velocity_;
   std::vector<double> saved_angle_, saved_spin_;
