@@ -13,8 +13,8 @@ namespace {
 
 constexpr double max_push_speed = 3.0;       // v_max [m/s] (S-2): fastest push-out of an overlap
 constexpr double max_hertz_per_rate = 0.25;  // f at most this fraction of the sub-step rate [-]
-// [-] Threads pay off from a few thousand contacts: each sub-step waits for the threads twice per
-// colour and once more, and a colour of a few hundred contacts is solved in microseconds.
+// [-] Threads pay off from a few thousand contacts: each sub-step waits for the threads 3 times
+// per colour, and a colour of a few hundred contacts is solved in microseconds.
 constexpr std::size_t parallel_contacts = 2000;
 
 // Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
