@@ -63,3 +63,19 @@ TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithTheSoftStepAsleep) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// Sleeping with sequential impulses (`sleep_time` set in a case): the jam holds as well.
+TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithSequentialImpulsesAsleep) {
+  JamScene scene = make_jam_scene(JamSceneSpec{});
+  ContactConfig config = jam_contact_config();
+  config.sleep_time = soft_step_sleep_time;
+  ContactWorld world(config);
+  test::expect_jam_settles_and_holds(scene, world);
+  for (int i = 0; i < scene.bodies.size(); ++i) EXPECT_TRUE(world.asleep(i)) << i;
+}
+
+}  // namespace
+}  // namespace flotsam
