@@ -35,11 +35,11 @@ void IslandSleep::wake_all() {
   for (std::size_t i = 0; i < asleep_.size(); ++i) wake(static_cast<int>(i));
 }
 
-// Wakes every body of sleeping group `group`; with `bodies`, each is put back where the body
-// step left it (check_forces moved it to its sleeping pose).
-void IslandSleep::wake_group(int group, BodySet* bodies) {
+// Wakes every body of the sleeping groups marked in woken_, in one pass; with `bodies`, each is
+// put back where the body step left it (check_forces moved it to its sleeping pose).
+void IslandSleep::wake_marked(BodySet* bodies) {
   for (std::size_t i = 0; i < asleep_.size(); ++i) {
-    if (!asleep_[i] || group_[i] != group) continue;
+    if (!asleep_[i] || !woken_[group_[i]]) continue;
     asleep_[i] = 0, still_time_[i] = 0.0, --sleeping_;
     if (!bodies || !stashed_[i]) continue;
     bodies->position[i] = moved_position_[i], bodies->angle[i] = moved_angle_[i];
@@ -72,9 +72,7 @@ void IslandSleep::check_forces(BodySet& bodies, const BodyVelocities& start,
         std::abs(angular_acceleration_[i] - rest_angular_[i]) * R * time_ > speed_;
     if (changed) woken_[group_[i]] = 1, any = true;
   }
-  if (any)
-    for (int g = 0; g < n; ++g)
-      if (woken_[g]) wake_group(g, nullptr);
+  if (any) wake_marked(nullptr);
   for (int i = 0; i < n; ++i) {
     if (!in_step[i] || !asleep_[i]) continue;
     stashed_[i] = 1;
@@ -96,9 +94,7 @@ bool IslandSleep::wake_touched(const std::vector<ContactConstraint>& contacts, B
     if (asleep_[c.b]) woken_[group_[c.b]] = 1;
     any = true;
   }
-  if (any)
-    for (std::size_t g = 0; g < woken_.size(); ++g)
-      if (woken_[g]) wake_group(static_cast<int>(g), &bodies);
+  if (any) wake_marked(&bodies);
   return any;
 }
 

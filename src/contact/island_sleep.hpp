@@ -64,7 +64,7 @@ class IslandSleep {
 
  private:
   void resize(int n);
-  void wake_group(int group, BodySet* bodies);
+  void wake_marked(BodySet* bodies);
 
   double time_, speed_;  // T_s [s], v_s [m/s]
   std::vector<char> asleep_;
