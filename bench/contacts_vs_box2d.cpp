@@ -41,6 +41,7 @@ struct Result {
   double detect_ms = 0.0;        // flotsam: boxes, broad and narrow phase per step [ms]
   double solve_ms = 0.0;         // flotsam: the solver per step [ms]
   double positions_ms = 0.0;     // flotsam: the position stage per step [ms]
+  double sleeping = 0.0;         // flotsam: islands asleep per step (not solved)
 };
 
 // Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
@@ -74,12 +75,13 @@ double cpu_seconds() {
   return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
-Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind solver) {
+Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind solver, bool sleep) {
   ContactConfig config = jam_contact_config();
   config.solver = solver;
+  config.sleep_time = sleep ? soft_step_sleep_time : 0.0;
   ContactWorld world(config);
   for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
-  double sweeps = 0.0, second_solves = 0.0, islands = 0.0;
+  double sweeps = 0.0, second_solves = 0.0, islands = 0.0, sleeping = 0.0;
   double detect = 0.0, solve = 0.0, positions = 0.0;  // [s] of the last solve of each step
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_seconds();
@@ -88,6 +90,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
     sweeps += world.profile().velocity_sweeps;
     second_solves += world.profile().second_solves;
     islands += world.profile().islands;
+    sleeping += world.profile().sleeping_islands;
     const ContactProfile& p = world.profile();
     detect += p.boxes + p.broad_phase + p.narrow_phase;
     solve += p.solve;
@@ -100,6 +103,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
   r.sweeps = sweeps / timed;
   r.second_solves = second_solves / timed;
   r.islands = islands / timed;
+  r.sleeping = sleeping / timed;
   r.detect_ms = 1e3 * detect / timed;
   r.solve_ms = 1e3 * solve / timed;
   r.positions_ms = 1e3 * positions / timed;
@@ -108,7 +112,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
 
 // The same scene in a Box2D world: banks as edges, piers as circles (flotsam's are 64-gons on
 // the circle), logs as boxes of the same mass and moment of inertia about the vertical.
-Result run_box2d(JamScene scene, int warm_up, int timed) {
+Result run_box2d(JamScene scene, int warm_up, int timed, bool sleep) {
   const ContactConfig config = jam_contact_config();
   auto world = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
   b2BodyDef ground_def;
@@ -150,7 +154,8 @@ Result run_box2d(JamScene scene, int warm_up, int timed) {
   constexpr float dt = static_cast<float>(jam_max_step);
   const auto step = [&] {
     for (b2Body* body : logs)
-      body->ApplyForceToCenter(b2Vec2(body->GetMass() * static_cast<float>(jam_push), 0.0f), true);
+      body->ApplyForceToCenter(b2Vec2(body->GetMass() * static_cast<float>(jam_push), 0.0f),
+                               !sleep);
     world->Step(dt, 8, 3);
   };
   for (int k = 0; k < warm_up; ++k) step();
@@ -172,19 +177,28 @@ Result run_box2d(JamScene scene, int warm_up, int timed) {
 }  // namespace flotsam
 
 // Arguments: the log counts (default 1000 10000 50000); `--no-sequential` leaves out flotsam's
-// sequential impulses (minutes at 50k).
+// sequential impulses (minutes at 50k); `--sleep`: both engines let resting islands sleep
+// (Box2D's push no longer wakes a sleeping body; flotsam's soft step with sleep_time 0.5 s, as a
+// case file's default: docs/model.md "Sleeping islands"), else every body is solved every step;
+// `--warm-up N`: N steps before the timed ones (default 100).
 int main(int argc, char** argv) {
   using namespace flotsam;
   std::vector<int> counts;
-  bool sequential = true;
+  bool sequential = true, sleep = false;
+  int warm_up = 100;  // steps of 0.02 s before the timed ones
   for (int k = 1; k < argc; ++k) {
     if (std::string(argv[k]) == "--no-sequential") {
       sequential = false;
+    } else if (std::string(argv[k]) == "--sleep") {
+      sleep = true;
+    } else if (std::string(argv[k]) == "--warm-up" && k + 1 < argc) {
+      warm_up = std::stoi(argv[++k]);
     } else {
       counts.push_back(std::stoi(argv[k]));
     }
   }
   if (counts.empty()) counts = {1000, 10000, 50000};
+  std::printf("sleeping %s\n", sleep ? "on" : "off");
   std::printf("%7s %-8s %12s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "cpu ms/step",
               "largest [mm]", "p99 [mm]", "past piers");
   for (const int n : counts) {
@@ -193,12 +207,12 @@ int main(int argc, char** argv) {
     spec.pier_count = std::max(2, n / 50 + 1);
     spec.row_gap = 0.0;
     const JamScene scene = make_jam_scene(spec);
-    const int warm_up = 100, timed = n >= 50000 ? 20 : 50;  // steps of 0.02 s
-    const Result b = run_box2d(scene, warm_up, timed);
-    const Result f =
-        sequential ? run_flotsam(scene, warm_up, timed, ContactSolverKind::sequential_impulses)
-                   : Result{};
-    const Result s = run_flotsam(scene, warm_up, timed, ContactSolverKind::soft_step);
+    const int timed = n >= 50000 ? 20 : 50;  // steps of 0.02 s
+    const Result b = run_box2d(scene, warm_up, timed, sleep);
+    const Result f = sequential ? run_flotsam(scene, warm_up, timed,
+                                              ContactSolverKind::sequential_impulses, sleep)
+                                : Result{};
+    const Result s = run_flotsam(scene, warm_up, timed, ContactSolverKind::soft_step, sleep);
     for (const auto& [name, r] :
          {std::pair{"box2d", b}, std::pair{"flotsam", f}, std::pair{"soft", s}}) {
       std::printf("%7d %-8s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
@@ -206,11 +220,11 @@ int main(int argc, char** argv) {
     }
     for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"soft", s}}) {
       std::printf(
-          "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f velocity sweeps per "
-          "step, %.0f %% of steps solved twice; last solve per step: detection %.2f ms, solver "
-          "%.2f ms, positions %.2f ms)\n",
+          "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f asleep, %.0f "
+          "velocity sweeps per step, %.0f %% of steps solved twice; last solve per step: "
+          "detection %.2f ms, solver %.2f ms, positions %.2f ms)\n",
           n, name, r.ms_per_step / b.ms_per_step, r.cpu_ms_per_step / b.cpu_ms_per_step,
-          r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sweeps,
+          r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sleeping, r.sweeps,
           100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms);
     }
     std::fflush(stdout);

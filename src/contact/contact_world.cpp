@@ -58,7 +58,8 @@ ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coeffi
     : config_(config),
       added_mass_coefficient_(added_mass_coefficient),
       solver_(make_contact_solver(config)),
-      margin_(solver_->margin_in_slops()) {}
+      margin_(solver_->margin_in_slops()),
+      sleep_(config.sleep_time, config.sleep_speed) {}
 
 // The solve moves each body on by h times its change of velocity. Detection only saw the gaps
 // within its margin (2 slop), so a body pushed further than that by a neighbour (a log struck
@@ -77,7 +78,20 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
   }
   reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
   find_interval_start(bodies, members);
+  if (sleep_.enabled()) {
+    active_.assign(static_cast<std::size_t>(bodies.size()), members ? 0 : 1);
+    if (members)
+      for (const int i : *members) active_[i] = 1;
+    for (int i = 0; i < bodies.size(); ++i)
+      active_[i] = active_[i] && bodies.state[i] != BodyState::gone;
+    sleep_.check_forces(bodies, interval_start_, lengths_, active_);
+  }
   detect(bodies, walls, members);
+  if (sleep_.wake_touched(contacts_, bodies)) {  // detected again with the woken bodies' poses
+    contacts_ = previous_;
+    contacts_.insert(contacts_.end(), others_.begin(), others_.end());
+    detect(bodies, walls, members);
+  }
   solve(bodies);
   if (grow_reach(bodies)) {
     solver_->undo(bodies);
@@ -90,6 +104,8 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
     profile_.second_solves = 0;
   }
   correct_positions(bodies);
+  sleep_.update(contacts_, islands_, bodies, lengths_, active_);
+  contacts_.insert(contacts_.end(), resting_.begin(), resting_.end());
   contacts_.insert(contacts_.end(), others_.begin(), others_.end());
   others_.clear();
   for (int i = 0; i < bodies.size(); ++i) {
@@ -144,7 +160,10 @@ ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments
   std::vector<char> free(static_cast<std::size_t>(bodies.size()), 0);
   for (const int i : schedule.free) free[i] = 1;
   after_known_.resize(free.size(), 0);
-  for (const int i : schedule.free) after_known_[i] = 0;  // its next interval starts unknown
+  for (const int i : schedule.free) {
+    after_known_[i] = 0;  // its next interval starts unknown
+    sleep_.wake(i);
+  }
   std::erase_if(contacts_,
                 [&](const ContactConstraint& c) { return free[c.a] || (c.b >= 0 && free[c.b]); });
   return schedule;
@@ -281,9 +300,13 @@ void ContactWorld::match_previous_points() {
   for (std::size_t m = 0; m < previous_.size(); ++m)
     previous_keys_.emplace_back(key(previous_[m]), static_cast<int>(m));
   std::sort(previous_keys_.begin(), previous_keys_.end());
-  profile_.points = profile_.warm_started_points = 0;
-  for (ContactConstraint& c : contacts_) {
-    profile_.points += c.point_count;
+  // Each contact looks up its own: in parallel, the same on any number of threads.
+  int points = 0, warm_started = 0;
+  const int count = static_cast<int>(contacts_.size());
+#pragma omp parallel for schedule(static) reduction(+ : points, warm_started) if (count >= 2000)
+  for (int m = 0; m < count; ++m) {
+    ContactConstraint& c = contacts_[static_cast<std::size_t>(m)];
+    points += c.point_count;
     const auto found = std::lower_bound(previous_keys_.begin(), previous_keys_.end(), key(c),
                                         [](const auto& x, const Key& k) { return x.first < k; });
     if (found == previous_keys_.end() || found->first != key(c)) continue;
@@ -316,9 +339,11 @@ void ContactWorld::match_previous_points() {
       p.first_impulse = old.first_impulse;
       p.last_impulse = old.last_impulse;
       p.resting = old.normal_impulse > 0.0;
-      ++profile_.warm_started_points;
+      ++warm_started;
     }
   }
+  profile_.points = points;
+  profile_.warm_started_points = warm_started;
 }
 
 // The solver (contact_solver.hpp) changes the velocities and moves the poses over the interval.
@@ -326,8 +351,11 @@ void ContactWorld::solve(BodySet& bodies) {
   Stopwatch clock;
   masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
   match_previous_points();
-  prepare_contacts(contacts_, bodies, masses_, config_, lengths_);
   islands_.group(contacts_, bodies.size());
+  profile_.sleeping_islands = sleep_.set_aside(contacts_, islands_, resting_, bodies);
+  profile_.sleeping_contacts = static_cast<int>(resting_.size());
+  if (profile_.sleeping_islands > 0) islands_.group(contacts_, bodies.size());
+  prepare_contacts(contacts_, bodies, masses_, config_, lengths_);
   profile_.islands = islands_.count();
   profile_.largest_island = islands_.largest();
   velocity_before_ = bodies.velocity;

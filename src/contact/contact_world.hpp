@@ -20,6 +20,7 @@
 #include "contact/contact_report.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/impulse_solver.hpp"
+#include "contact/island_sleep.hpp"
 #include "contact/islands.hpp"
 #include "contact/sweep_and_prune.hpp"
 #include "io/case.hpp"
@@ -42,6 +43,8 @@ struct ContactProfile {
   int largest_island = 0;        // contacts in the largest island
   double largest_overlap = 0.0;  // [m] after position correction
   int second_solves = 0;         // 1 when the interval was solved again with grown margins
+  int sleeping_islands = 0;      // islands set aside asleep (contact/island_sleep.hpp)
+  int sleeping_contacts = 0;     // their contacts
 };
 
 enum class BroadPhase { sweep_and_prune, brute_force };
@@ -85,7 +88,10 @@ class ContactWorld {
     contacts_ = std::move(contacts);
     sweep_.restore(std::move(sweep_order), sweep_axis);
     after_known_.clear();
+    sleep_.wake_all();
   }
+  /// Whether body i is asleep (contact/island_sleep.hpp).
+  bool asleep(int i) const { return sleep_.asleep(i); }
   const ContactConfig& config() const { return config_; }
 
  private:
@@ -116,6 +122,8 @@ class ContactWorld {
   double margin_;  // detection margin in slops (ContactSolver::margin_in_slops)
   SolverMasses masses_;
   Islands islands_;
+  IslandSleep sleep_;
+  std::vector<ContactConstraint> resting_;       // contacts of the sleeping islands of this step
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
   BodyVelocities after_;           // each body's velocities at the end of its last step here

@@ -128,7 +128,11 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
 void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
                       const SolverMasses& masses, const ContactConfig& config,
                       const std::vector<double>& intervals) {
-  for (ContactConstraint& c : contacts) {
+  // Each contact on its own: in parallel, the same on any number of threads.
+  const auto count = static_cast<std::ptrdiff_t>(contacts.size());
+#pragma omp parallel for schedule(static) if (count >= 2000)
+  for (std::ptrdiff_t m = 0; m < count; ++m) {
+    ContactConstraint& c = contacts[static_cast<std::size_t>(m)];
     const double interval = c.b >= 0 ? std::max(intervals[c.a], intervals[c.b]) : intervals[c.a];
     const Vec2 tangent = -perp(c.normal);
     for (int k = 0; k < c.point_count; ++k) {

@@ -1,6 +1,7 @@
 #include "contact/soft_step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "contact/restitution_energy.hpp"
@@ -40,11 +41,12 @@ Vec2 rotate(const Vec2& q, const Vec2& r) {  // R(Theta) r with q = (cos Theta, 
 
 // Runs f(contact) over every contact, colour after colour; inside a parallel region, the
 // contacts of a colour are shared among the threads (none shares a movable body with another),
-// the overflow's taken by one thread.
+// the overflow's taken by one thread. The threads meet once per colour.
 template <class F>
 void SoftStep::each_colour(F&& f) {
   for (int g = 0; g < colours_.groups(); ++g) {
     const int begin = colours_.start(g), end = colours_.start(g + 1);
+    if (begin == end) continue;  // an empty overflow: no meeting of the threads
     if (colours_.is_overflow(g)) {
 #pragma omp single
       for (int k = begin; k < end; ++k) f(soft_[static_cast<std::size_t>(k)]);
@@ -60,50 +62,47 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
                     const std::vector<double>& intervals, const BodyVelocities& start) {
   prepare(contacts, bodies, masses, intervals, start);
   const int substeps = config_.substeps;
-  const int moving = static_cast<int>(moving_.size());
   double largest = 0.0;  // [m] overlap at the end
-#pragma omp parallel if (contacts.size() >= parallel_contacts)
+  const bool threads = contacts.size() >= parallel_contacts && choice_.threads();
+  const auto start_time = std::chrono::steady_clock::now();
+#pragma omp parallel if (threads)
   {
     for (int k = 0; k < substeps; ++k) {
-#pragma omp for schedule(static)
-      for (int m = 0; m < moving; ++m) {  // this sub-step's share of the forces' velocity
-        const int i = moving_[static_cast<std::size_t>(m)];
-        velocity_[i] += gain_[i];
-        spin_[i] += spin_gain_[i];
-      }
-      each_colour([&](Contact& c) { warm_start(c, k); });
+      each_colour([&](Contact& c) { warm_start(c); });
       each_colour([&](Contact& c) { solve_contact(c, true); });
-#pragma omp for schedule(static)
-      for (int m = 0; m < moving; ++m) {  // the poses move by h_s u; (cos, sin) turned
-        const int i = moving_[static_cast<std::size_t>(m)];
-        const double h = step_[i], turn = h * spin_[i];  // [s], [rad]
-        shift_[i] += h * velocity_[i];
-        turn_[i] += turn;
-        const Vec2 q = rotation_[i] + turn * perp(rotation_[i]);
-        rotation_[i] = q / q.norm();
-      }
       each_colour([&](Contact& c) {
+        if (c.first_of_a) move_pose(c.a);  // before any contact of the body reads its pose
+        if (c.first_of_b) move_pose(c.b);
         solve_contact(c, false);
         for (int p = 0; p < c.count; ++p) {  // this sub-step's impulses join the interval's
           Point& q = c.points[static_cast<std::size_t>(p)];
           q.total_normal += q.normal_impulse;
           q.total_tangent += q.tangent_impulse;
           if (k == 0) q.first = {q.normal_impulse, q.tangent_impulse};
+          // Sub-step 1 starts from the last interval's last sub-step.
+          if (k == 0 && substeps > 1)
+            q.normal_impulse = q.later.x(), q.tangent_impulse = q.later.y();
         }
       });
     }
-#pragma omp single
-    for (std::size_t m = 0; m < moving_.size(); ++m)  // after the compression
-      mid_velocity_[m] = velocity_[moving_[m]], mid_spin_[m] = spin_[moving_[m]];
     double worst = 0.0;  // [m]
-    each_colour([&](Contact& c) { worst = std::max(worst, restitute(c)); });
+    each_colour([&](Contact& c) {
+      for (const auto& [first, i] : {std::pair{c.first_of_a, c.a}, std::pair{c.first_of_b, c.b}})
+        if (first) mid_velocity_[i] = velocity_[i], mid_spin_[i] = spin_[i];  // before restitution
+      worst = std::max(worst, restitute(c));
+    });
 #pragma omp critical
     largest = std::max(largest, worst);
   }
+  if (contacts.size() >= parallel_contacts)
+    choice_.record(
+        threads,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(),
+        static_cast<double>(contacts.size()));
   largest_overlap_ = largest;
   bound_restitution();
   store(contacts, bodies);
-  return 2 * substeps;
+  return contacts.empty() ? 0 : 2 * substeps;
 }
 
 // Flat copies of the contacts in colour order, with their soft coefficients (S-2), and of the
@@ -193,9 +192,16 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       q.resting = s.resting;
     }
   }
+  // Each movable body's first contact in colour order.
+  std::fill(seen.begin(), seen.end(), 0);
+  for (Contact& c : soft_) {
+    c.first_of_a = movable_[c.a] && !seen[c.a];
+    c.first_of_b = movable_[c.b] && !seen[c.b];
+    seen[c.a] = seen[c.b] = 1;
+  }
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
-  mid_velocity_.resize(moving_.size()), mid_spin_.resize(moving_.size());
+  mid_velocity_.resize(slots), mid_spin_.resize(slots);
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
     saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
@@ -203,16 +209,18 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   }
 }
 
-// Sub-step 0 starts from the first sub-step's impulses of the last interval (it takes the
-// velocity the forces gave over the whole interval), sub-step 1 from the last sub-step's, the
-// later ones from the sub-step before.
-void SoftStep::warm_start(Contact& c, int substep) {
+// The impulses a contact starts a sub-step from (sub-step 0: the first sub-step's of the last
+// interval, which took the forces' velocity of the whole interval; sub-step 1: the last
+// sub-step's; the later ones: the sub-step before). At a body's first contact in colour order,
+// the body takes this sub-step's share of the forces' velocity first.
+void SoftStep::warm_start(Contact& c) {
   Vec2 va = velocity_[c.a], vb = velocity_[c.b];
   double wa = spin_[c.a], wb = spin_[c.b];
+  if (c.first_of_a) va += gain_[c.a], wa += spin_gain_[c.a];
+  if (c.first_of_b) vb += gain_[c.b], wb += spin_gain_[c.b];
   const Vec2 tangent = -perp(c.normal);
   for (int p = 0; p < c.count; ++p) {
-    Point& q = c.points[static_cast<std::size_t>(p)];
-    if (substep == 1) q.normal_impulse = q.later.x(), q.tangent_impulse = q.later.y();
+    const Point& q = c.points[static_cast<std::size_t>(p)];
     const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
     va += inverse_mass_[c.a] * P;
     wa += inverse_inertia_[c.a] * cross(q.r_a, P);
@@ -221,6 +229,15 @@ void SoftStep::warm_start(Contact& c, int substep) {
   }
   if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
   if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
+}
+
+// Body i's pose moves by h_s u; (cos, sin) turned.
+void SoftStep::move_pose(int i) {
+  const double h = step_[i], turn = h * spin_[i];  // [s], [rad]
+  shift_[i] += h * velocity_[i];
+  turn_[i] += turn;
+  const Vec2 q = rotation_[i] + turn * perp(rotation_[i]);
+  rotation_[i] = q / q.norm();
 }
 
 // One iteration over the points of a contact: normal impulses (S-2), then friction.
@@ -302,16 +319,16 @@ void SoftStep::bound_restitution() {
     const int i = moving_[m];
     const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
     before += solver_kinetic_energy(saved_velocity_[m], saved_spin_[m], w, w_i);
-    mid += solver_kinetic_energy(mid_velocity_[m], mid_spin_[m], w, w_i);
+    mid += solver_kinetic_energy(mid_velocity_[i], mid_spin_[i], w, w_i);
     end += solver_kinetic_energy(velocity_[i], spin_[i], w, w_i);
-    change.add(mid_velocity_[m], mid_spin_[m], velocity_[i], spin_[i], w, w_i);
+    change.add(mid_velocity_[i], mid_spin_[i], velocity_[i], spin_[i], w, w_i);
   }
   if (end <= before * (1.0 + round_off)) return;
   const double s = change.fraction(before, mid, config_.restitution);  // [-]
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
-    velocity_[i] = mid_velocity_[m] + s * (velocity_[i] - mid_velocity_[m]);
-    spin_[i] = mid_spin_[m] + s * (spin_[i] - mid_spin_[m]);
+    velocity_[i] = mid_velocity_[i] + s * (velocity_[i] - mid_velocity_[i]);
+    spin_[i] = mid_spin_[i] + s * (spin_[i] - mid_spin_[i]);
   }
 }
 

@@ -36,6 +36,7 @@
 // colours' contacts in parallel: the same result on any number of threads.
 #include "contact/contact_colours.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/thread_choice.hpp"
 
 namespace flotsam {
 
@@ -78,6 +79,7 @@ class SoftStep final : public ContactSolver {
     double bias_rate = 0.0;                            // b [1/s]
     double mass_scale = 1.0, impulse_scale = 0.0;      // a/(1+a), 1/(1+a) [-]
     bool use_block = false;                            // two points relaxed and restituted at once
+    bool first_of_a = false, first_of_b = false;       // the body's first contact in colour order
     Mat2 K = Mat2::Zero(), block_mass = Mat2::Zero();  // [1/kg], K^-1 [kg]
     std::array<Point, 2> points;
   };
@@ -88,7 +90,8 @@ class SoftStep final : public ContactSolver {
                const BodyVelocities& start);
   void store(std::vector<ContactConstraint>& contacts, BodySet& bodies);
   void solve_contact(Contact& c, bool bias);
-  void warm_start(Contact& c, int substep);
+  void warm_start(Contact& c);
+  void move_pose(int body);
   double restitute(Contact& c);
   void bound_restitution();
   template <class F>
@@ -96,6 +99,7 @@ class SoftStep final : public ContactSolver {
 
   ContactConfig config_;
   ContactColours colours_;
+  ThreadChoice choice_;  // whether the colours are shared among the threads (same bits either way)
   std::vector<Contact> soft_;  // in colour order
   std::vector<int> source_;    // soft_[k] is contacts[source_[k]]
   // Per body slot (bodies.size() + 1, the last a wall): velocity, pose from the detected one.
@@ -109,7 +113,7 @@ class SoftStep final : public ContactSolver {
   // What undo() puts back.
   std::vector<Vec2> saved_position_, saved_velocity_;
   std::vector<double> saved_angle_, saved_spin_;
-  // The velocities after the compression, before restitution (per moving_ body).
+  // The velocities after the compression, before restitution (per body slot).
   std::vector<Vec2> mid_velocity_;
   std::vector<double> mid_spin_;
   double largest_overlap_ = 0.0;  // [m]

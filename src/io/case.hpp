@@ -198,7 +198,14 @@ struct ContactConfig {
   int substeps = 4;             // sub-steps per contact interval
   double contact_hertz = 30.0;  // [Hz] stiffness of a soft contact, as a natural frequency
   double damping_ratio = 10.0;  // zeta [-] of a soft contact
+  // Sleeping islands (src/contact/island_sleep.hpp): an island still for sleep_time is not solved
+  // until touched or its forces change. 0: never (the case file's default with soft_step is
+  // soft_step_sleep_time).
+  double sleep_time = 0.0;    // T_s [s]
+  double sleep_speed = 1e-3;  // v_s [m/s]
 };
+
+constexpr double soft_step_sleep_time = 0.5;  // [s] Box2D's b2_timeToSleep
 
 /// Bodies released from a line or a zone (spec 5), at a rate over [start_time, end_time] or
 /// `count` of them at once at start_time, with sizes drawn uniformly in ranges.

@@ -56,6 +56,10 @@ ContactConfig read_contact(const YamlMap& m) {
   c.restitution_threshold =
       m.number("restitution_threshold", c.restitution_threshold, Range::non_negative());
   c.allowed_overlap = m.number("allowed_overlap", c.allowed_overlap, Range{0.0, 1.0, false, true});
+  c.sleep_time = m.number(
+      "sleep_time", c.solver == ContactSolverKind::soft_step ? soft_step_sleep_time : c.sleep_time,
+      Range::non_negative());
+  c.sleep_speed = m.number("sleep_speed", c.sleep_speed, Range::positive());
   if (c.solver == ContactSolverKind::soft_step) {
     constexpr std::string_view why = "only used with solver 'sequential_impulses'";
     m.forbid("iterations", why);

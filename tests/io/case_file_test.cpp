@@ -1015,3 +1015,24 @@ TEST(CaseFile, TheContactSolverAndItsOwnSettingsAreRead) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// bodies.contact.sleep_time: 0.5 s by default with the soft step, 0 (never) with sequential
+// impulses; either may be set.
+TEST(CaseFile, SleepingIslandsAreOnByDefaultWithTheSoftStepOnly) {
+  const auto contact = [](const std::string& text) {
+    return parse_case(appended("bodies:\n  contact: " + text + "\n"), "case.yaml").bodies.contact;
+  };
+  EXPECT_EQ(contact("{solver: soft_step}").sleep_time, 0.5);
+  EXPECT_EQ(contact("{solver: sequential_impulses}").sleep_time, 0.0);
+  EXPECT_EQ(contact("{solver: soft_step, sleep_time: 0}").sleep_time, 0.0);
+  const ContactConfig set =
+      contact("{solver: sequential_impulses, sleep_time: 2, sleep_speed: 0.01}");
+  EXPECT_EQ(set.sleep_time, 2.0);
+  EXPECT_EQ(set.sleep_speed, 0.01);
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -45,3 +45,37 @@ TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithTheSoftStep) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// The same jam with the soft step and sleeping islands (contact/island_sleep.hpp, as a case
+// file's soft step): it holds as well, and ends asleep (not solved).
+TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithTheSoftStepAsleep) {
+  JamScene scene = make_jam_scene(JamSceneSpec{});
+  ContactConfig config = jam_contact_config();
+  config.solver = ContactSolverKind::soft_step;
+  config.sleep_time = soft_step_sleep_time;
+  ContactWorld world(config);
+  test::expect_jam_settles_and_holds(scene, world);
+  for (int i = 0; i < scene.bodies.size(); ++i) EXPECT_TRUE(world.asleep(i)) << i;
+}
+
+}  // namespace
+}  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// Sleeping with sequential impulses (`sleep_time` set in a case): the jam holds as well.
+TEST(LogJamAtPiers, FiftyLogsComeToRestAndStayWithSequentialImpulsesAsleep) {
+  JamScene scene = make_jam_scene(JamSceneSpec{});
+  ContactConfig config = jam_contact_config();
+  config.sleep_time = soft_step_sleep_time;
+  ContactWorld world(config);
+  test::expect_jam_settles_and_holds(scene, world);
+  for (int i = 0; i < scene.bodies.size(); ++i) EXPECT_TRUE(world.asleep(i)) << i;
+}
+
+}  // namespace
+}  // namespace flotsam
