@@ -14,49 +14,68 @@ namespace {
 
 constexpr int W = batch_width;
 
-/// The lanes' data gathered from their elements, and the flow interpolated from them.
-struct FemLanes {
-  alignas(64) double N[6][W], gr[6][W], gs[6][W];  // P2 values and d/dr, d/ds
-  alignas(64) double U0[6][W], V0[6][W], U1[6][W], V1[6][W], Z[6][W], E0[3][W], E1[3][W];
-  alignas(64) double J00[W], J01[W], J10[W], J11[W], r[W], s[W], t[W];
-  alignas(64) double H[W], u[W], v[W], g00[W], g01[W], g10[W], g11[W], du[W], dv[W], zx[W], zy[W];
+/// The nodal fields the lanes read, as flat arrays indexed by mesh node.
+struct FemNodes {
+  const double *u0, *v0, *u1, *v1, *eta0, *eta1, *bed;  // the step's two states, the bed
 };
 
-/// fem_flow_field.cpp's sums, lane by lane (a virtual function has no clones: this one has).
+/// Per lane: its element's six nodes, J^-T, the point's (r, s) and time; then the flow.
+struct FemLanes {
+  alignas(64) int node[6][W];
+  alignas(64) double J00[W], J01[W], J10[W], J11[W], r[W], s[W], t[W];
+  alignas(64) double N[6][W], gr[6][W], gs[6][W];  // P2 values and d/dr, d/ds
+  // fem_flow_field.cpp's sums: u0, u1, G0, G1, z_b, grad z_b, eta0, eta1
+  alignas(64) double u0x[W], u0y[W], u1x[W], u1y[W], a00[W], a01[W], a10[W], a11[W];
+  alignas(64) double b00[W], b01[W], b10[W], b11[W], z_b[W], z_x[W], z_y[W], eta0[W], eta1[W];
+  alignas(64) double H[W], u[W], v[W], g00[W], g01[W], g10[W], g11[W], du[W], dv[W];
+};
+
+/// fem_flow_field.cpp's sums, lane by lane in loops over the lanes, node after node, reading
+/// the nodes' values where they are (a virtual function has no clones: this one has).
 FLOTSAM_VECTOR_CLONES
-void interpolate(FemLanes& L, double t0, double span) {
+void interpolate(FemLanes& L, const FemNodes& f, double t0, double span) {
 #pragma omp simd
   for (int k = 0; k < W; ++k) {
-    const double a = time_weight(L.t[k], t0, span);
-    double u0x = 0.0, u0y = 0.0, u1x = 0.0, u1y = 0.0, z_b = 0.0, z_x = 0.0, z_y = 0.0;
-    double a00 = 0.0, a01 = 0.0, a10 = 0.0, a11 = 0.0;  // G0
-    double b00 = 0.0, b01 = 0.0, b10 = 0.0, b11 = 0.0;  // G1
-    for (int j = 0; j < 6; ++j) {
+    p2_basis(L.r[k], L.s[k], &L.N[0][k], &L.gr[0][k], &L.gs[0][k], W);
+    L.u0x[k] = L.u0y[k] = L.u1x[k] = L.u1y[k] = 0.0;
+    L.a00[k] = L.a01[k] = L.a10[k] = L.a11[k] = 0.0;
+    L.b00[k] = L.b01[k] = L.b10[k] = L.b11[k] = 0.0;
+    L.z_b[k] = L.z_x[k] = L.z_y[k] = L.eta0[k] = L.eta1[k] = 0.0;
+  }
+  for (int j = 0; j < 6; ++j) {
+#pragma omp simd
+    for (int k = 0; k < W; ++k) {
+      const int n = L.node[j][k];
       const double dx = L.J00[k] * L.gr[j][k] + L.J01[k] * L.gs[j][k];  // d = J^-T grad N_j
       const double dy = L.J10[k] * L.gr[j][k] + L.J11[k] * L.gs[j][k];
-      const double ax = L.U0[j][k], ay = L.V0[j][k], bx = L.U1[j][k], by = L.V1[j][k];
-      const double N = L.N[j][k], Z = L.Z[j][k];
-      u0x += N * ax, u0y += N * ay;
-      u1x += N * bx, u1y += N * by;
-      a00 += ax * dx, a01 += ax * dy, a10 += ay * dx, a11 += ay * dy;
-      b00 += bx * dx, b01 += bx * dy, b10 += by * dx, b11 += by * dy;
-      z_b += N * Z;
-      z_x += Z * dx, z_y += Z * dy;
+      const double ax = f.u0[n], ay = f.v0[n], bx = f.u1[n], by = f.v1[n], Z = f.bed[n];
+      const double N = L.N[j][k];
+      L.u0x[k] += N * ax, L.u0y[k] += N * ay;
+      L.u1x[k] += N * bx, L.u1y[k] += N * by;
+      L.a00[k] += ax * dx, L.a01[k] += ax * dy, L.a10[k] += ay * dx, L.a11[k] += ay * dy;
+      L.b00[k] += bx * dx, L.b01[k] += bx * dy, L.b10[k] += by * dx, L.b11[k] += by * dy;
+      L.z_b[k] += N * Z;
+      L.z_x[k] += Z * dx, L.z_y[k] += Z * dy;
     }
-    const double M0 = 1.0 - L.r[k] - L.s[k], M1 = L.r[k], M2 = L.s[k];  // p1_values
-    double eta0 = 0.0, eta1 = 0.0;
-    eta0 += M0 * L.E0[0][k], eta1 += M0 * L.E1[0][k];
-    eta0 += M1 * L.E0[1][k], eta1 += M1 * L.E1[1][k];
-    eta0 += M2 * L.E0[2][k], eta1 += M2 * L.E1[2][k];
-    const double b = 1 - a;
-    const double eta = b * eta0 + a * eta1;
-    L.H[k] = eta - z_b;
-    L.u[k] = b * u0x + a * u1x, L.v[k] = b * u0y + a * u1y;
-    L.g00[k] = b * a00 + a * b00, L.g01[k] = b * a01 + a * b01;
-    L.g10[k] = b * a10 + a * b10, L.g11[k] = b * a11 + a * b11;
-    L.du[k] = span > 0.0 ? (u1x - u0x) / span : 0.0;
-    L.dv[k] = span > 0.0 ? (u1y - u0y) / span : 0.0;
-    L.zx[k] = z_x, L.zy[k] = z_y;
+  }
+  for (int j = 0; j < 3; ++j) {
+#pragma omp simd
+    for (int k = 0; k < W; ++k) {
+      const double M = j == 0 ? 1.0 - L.r[k] - L.s[k] : j == 1 ? L.r[k] : L.s[k];  // p1_values
+      L.eta0[k] += M * f.eta0[L.node[j][k]];
+      L.eta1[k] += M * f.eta1[L.node[j][k]];
+    }
+  }
+#pragma omp simd
+  for (int k = 0; k < W; ++k) {
+    const double a = time_weight(L.t[k], t0, span), b = 1 - a;
+    const double eta = b * L.eta0[k] + a * L.eta1[k];
+    L.H[k] = eta - L.z_b[k];
+    L.u[k] = b * L.u0x[k] + a * L.u1x[k], L.v[k] = b * L.u0y[k] + a * L.u1y[k];
+    L.g00[k] = b * L.a00[k] + a * L.b00[k], L.g01[k] = b * L.a01[k] + a * L.b01[k];
+    L.g10[k] = b * L.a10[k] + a * L.b10[k], L.g11[k] = b * L.a11[k] + a * L.b11[k];
+    L.du[k] = span > 0.0 ? (L.u1x[k] - L.u0x[k]) / span : 0.0;
+    L.dv[k] = span > 0.0 ? (L.u1y[k] - L.u0y[k]) / span : 0.0;
   }
 }
 
@@ -69,54 +88,40 @@ void FemFlowField::sample_batch(const double* x, const double* y, const double* 
   const Mesh& mesh = solver_.mesh();
   const FlowState& s0 = solver_.previous_state();
   const FlowState& s1 = solver_.state();
-  const std::vector<double>& bed = solver_.bed();
   const double span = s1.time - s0.time;  // [s]
 
-  // The lanes interpolated here (inside, straight element), with their element's data.
+  // The lanes interpolated here (inside, straight element); an idle lane reads element 0.
   bool lane[W];
   FemLanes L;
   for (int k = 0; k < W; ++k) {
     const Location& w = where[k];
     lane[k] = active[k] && w.inside && !w.curved;
-    if (active[k] && w.inside && w.curved) {
-      out.set(k, sample({x[k], y[k]}, t[k], hints[k]));  // the same location from the same hint
-      continue;
-    }
-    if (active[k] && w.element >= 0) hints[k] = w.element;
-    if (!lane[k]) {
-      out.set(k, FlowSample{.inside = false});
-      L.r[k] = L.s[k] = L.t[k] = 0.0;  // numbers for the idle lane's loop below
-      L.J00[k] = L.J01[k] = L.J10[k] = L.J11[k] = 0.0;
-      for (int j = 0; j < 6; ++j)
-        L.U0[j][k] = L.V0[j][k] = L.U1[j][k] = L.V1[j][k] = L.Z[j][k] = 0.0;
-      for (int j = 0; j < 3; ++j) L.E0[j][k] = L.E1[j][k] = 0.0;
-      for (int j = 0; j < 6; ++j) L.N[j][k] = L.gr[j][k] = L.gs[j][k] = 0.0;
-      continue;
-    }
-    const auto& el = mesh.elements[w.element];
-    const P2Values Nk = p2_values(w.r, w.s);
-    const P2Gradients g2 = p2_reference_gradients(w.r, w.s);
-    for (int j = 0; j < 6; ++j) {
-      const int n = el[j];
-      L.N[j][k] = Nk[j], L.gr[j][k] = g2[j].x(), L.gs[j][k] = g2[j].y();
-      L.U0[j][k] = s0.u[n], L.V0[j][k] = s0.v[n], L.U1[j][k] = s1.u[n], L.V1[j][k] = s1.v[n];
-      L.Z[j][k] = bed[n];
-    }
-    for (int j = 0; j < 3; ++j) L.E0[j][k] = s0.eta[el[j]], L.E1[j][k] = s1.eta[el[j]];
-    const Mat2& J = straight_inverse_[w.element];
+    if (active[k] && w.inside && w.curved)  // the same location from the same hint
+      out.set(k, sample({x[k], y[k]}, t[k], hints[k]));
+    else if (active[k] && w.element >= 0)
+      hints[k] = w.element;
+    const int e = lane[k] ? w.element : 0;
+    const auto& el = mesh.elements[e];
+    for (int j = 0; j < 6; ++j) L.node[j][k] = el[j];
+    const Mat2& J = straight_inverse_[e];
     L.J00[k] = J(0, 0), L.J01[k] = J(0, 1), L.J10[k] = J(1, 0), L.J11[k] = J(1, 1);
-    L.r[k] = w.r, L.s[k] = w.s;
-    L.t[k] = t[k];
+    L.r[k] = lane[k] ? w.r : 0.0, L.s[k] = lane[k] ? w.s : 0.0, L.t[k] = t[k];
   }
 
-  interpolate(L, s0.time, span);
+  interpolate(L,
+              {s0.u.data(), s0.v.data(), s1.u.data(), s1.v.data(), s0.eta.data(), s1.eta.data(),
+               solver_.bed().data()},
+              s0.time, span);
   for (int k = 0; k < W; ++k) {
-    if (!lane[k]) continue;
+    if (!lane[k]) {
+      if (!(active[k] && where[k].inside)) out.set(k, FlowSample{.inside = false});
+      continue;
+    }
     out.inside[k] = 1.0;
     out.H[k] = L.H[k], out.u[k] = L.u[k], out.v[k] = L.v[k];
     out.g00[k] = L.g00[k], out.g01[k] = L.g01[k], out.g10[k] = L.g10[k], out.g11[k] = L.g11[k];
     out.du_dt[k] = L.du[k], out.dv_dt[k] = L.dv[k];
-    out.zb_x[k] = L.zx[k], out.zb_y[k] = L.zy[k];
+    out.zb_x[k] = L.z_x[k], out.zb_y[k] = L.z_y[k];
   }
 }
 
