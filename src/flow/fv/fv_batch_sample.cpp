@@ -60,12 +60,19 @@ void FvFlowField::sample_batch(const double* x, const double* y, const double* t
   const std::vector<double>& cell_bed = solver_.bed();
   const double span = t1_ - t0_;  // [s]
 
-  bool lane[W];
+  bool lane[W], any = false;
+  for (int k = 0; k < W; ++k) {
+    lane[k] = active[k] && where[k].inside;
+    any = any || lane[k];
+    if (active[k] && where[k].element >= 0) hints[k] = where[k].element;
+  }
+  if (!any) {  // nothing to read (the states need not exist yet)
+    for (int k = 0; k < W; ++k) out.set(k, FlowSample{.inside = false});
+    return;
+  }
   FvLanes L;
   for (int k = 0; k < W; ++k) {
     const Location& w = where[k];
-    lane[k] = active[k] && w.inside;
-    if (active[k] && w.element >= 0) hints[k] = w.element;
     const int i = lane[k] ? c.cell_of(w.element, w.r, w.s) : 0;  // cell 0: numbers for idle lanes
     L.dx[k] = x[k] - c.centroid[i].x(), L.dy[k] = y[k] - c.centroid[i].y();
     L.z0[k] = cell_bed[i], L.sx[k] = bed_slope_[i].x(), L.sy[k] = bed_slope_[i].y();
