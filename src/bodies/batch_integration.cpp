@@ -3,14 +3,8 @@
 #include <cmath>
 
 #include "bodies/body_step.hpp"
+#include "core/vector_clones.hpp"
 
-// Run-time dispatch: the vector loops built for the default x86-64 (SSE2), AVX2 and AVX-512
-// (x86-64-v4), the best one the processor has chosen when the program loads.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define FLOTSAM_VECTOR_CLONES __attribute__((target_clones("default", "avx2", "arch=x86-64-v4")))
-#else
-#define FLOTSAM_VECTOR_CLONES
-#endif
 #define FLOTSAM_INLINE [[gnu::always_inline]] inline
 
 namespace flotsam {
@@ -58,9 +52,8 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
 
   // The flow, once per lane at G; the displaced mass (spec 2; any for a lane that is idle or
   // outside, whose derivative is dropped or zero).
-  const FlowSample outside{.inside = false};
+  flow.sample_batch(y.c[0], y.c[1], t, active, B.hint, B.at_G);
   for (int k = 0; k < W; ++k) {
-    B.at_G.set(k, active[k] ? flow.sample({y.c[0][k], y.c[1][k]}, t[k], B.hint[k]) : outside);
     const double H = B.at_G.H[k], d = B.bodies.draft[k];
     const bool floating = H > d && B.bodies.can_float[k] != 0.0;
     B.displaced[k] =
@@ -82,16 +75,18 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
         B.fraction[k] = 1.0;
       }
     } else {
+      bool sampled[W];
+      int hints[W];  // each point walks from G's element, which keeps it
       for (int k = 0; k < W; ++k) {
         const double L = B.bodies.length[k];
         const double s_k = (slice + 0.5) * L / N - 0.5 * L;  // slice centre on the axis [m]
         const Vec2 x_k = Vec2(y.c[0][k], y.c[1][k]) + s_k * Vec2(B.axis_x[k], B.axis_y[k]);
-        int hint = B.hint[k];
-        B.at_point.set(
-            k, active[k] && B.at_G.inside[k] != 0.0 ? flow.sample(x_k, t[k], hint) : outside);
+        sampled[k] = active[k] && B.at_G.inside[k] != 0.0;
+        hints[k] = B.hint[k];
         B.point_x[k] = x_k.x(), B.point_y[k] = x_k.y();
         B.fraction[k] = 1.0 / N;
       }
+      flow.sample_batch(B.point_x, B.point_y, t, sampled, hints, B.at_point);
     }
     add_slice_drag(B.bodies, B.at_point, B.point_x, B.point_y, B.fraction, y, B.axis_x, B.axis_y,
                    model, drag);

@@ -3,8 +3,9 @@
 // (spec 3.5): every body keeps its own time, step, error and acceptance exactly as
 // rkf45_integrate would give it (the same control, rkf45_control), but each Runge-Kutta stage is
 // evaluated for all the batch's bodies at once by the lanes of body_batch.hpp, the flow sampled
-// once per body and stage. A body that has reached the interval's end, or that only redoes the
-// stages of a rejected sub-step, leaves its lane idle until the batch is done.
+// once per body and stage for the whole batch (FlowField::sample_batch). A body that has reached
+// the interval's end, or that only redoes the stages of a rejected sub-step, leaves its lane idle
+// until the batch is done.
 //
 // The bodies' lanes never mix, so a body's result does not depend on the bodies it is batched
 // with; the vector code is built for SSE2 (any x86-64), AVX2 and AVX-512 and picked at run time

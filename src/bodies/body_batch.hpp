@@ -6,21 +6,17 @@
 // same order of operations; only Ganser's R^0.6567 differs, branch_free_pow instead of
 // std::exp(0.6567 * std::log(R)) (core/branch_free_math.hpp: within 1.2e-14 relative of it), so
 // a batch's derivative is the scalar body_derivative's to about 1e-14 relative
-// (tests/bodies/body_batch_test.cpp). What branches stays scalar: the flow sampled once per body
-// (and per drag point), the displaced mass and the bed of a grounded body
-// (body_motion.cpp's finish_derivative), the axis far from its reference.
+// (tests/bodies/body_batch_test.cpp). The flow comes sampled for the batch
+// (FlowField::sample_batch, flow_batch.hpp); what branches stays scalar: the displaced mass and the
+// bed of a grounded body (body_motion.cpp's finish_derivative), the axis far from its reference.
 #include <algorithm>
 
 #include "bodies/body_motion.hpp"
 #include "core/branch_free_math.hpp"
 #include "core/constants.hpp"
+#include "flow/flow_batch.hpp"
 
 namespace flotsam {
-
-/// Bodies per batch: one AVX-512 register of doubles, two AVX2, four SSE2 ones.
-inline constexpr int batch_width = 8;
-
-using Lanes = double[batch_width];
 
 /// The bodies of a batch: each lane's index and its constants. Unused lanes repeat the first
 /// body (so that every lane computes on sane numbers); their results are dropped.
@@ -57,24 +53,6 @@ struct alignas(64) BatchBodies {
       box[k] = set.shape[i] == Shape::box ? 1.0 : 0.0;
       can_float[k] = set.density[i] < rho ? 1.0 : 0.0;
     }
-  }
-};
-
-/// The flow at one point per lane (FlowSample's fields as lanes).
-struct alignas(64) BatchFlow {
-  alignas(64) Lanes inside;  // 1 inside the domain, 0 outside (then the rest is zero)
-  alignas(64) Lanes H, u, v;
-  alignas(64) Lanes g00, g01, g10, g11;  // grad_u(i, j)
-  alignas(64) Lanes du_dt, dv_dt;
-  alignas(64) Lanes zb_x, zb_y;
-
-  void set(int k, const FlowSample& s) {
-    inside[k] = s.inside ? 1.0 : 0.0;
-    H[k] = s.H, u[k] = s.u.x(), v[k] = s.u.y();
-    g00[k] = s.grad_u(0, 0), g01[k] = s.grad_u(0, 1), g10[k] = s.grad_u(1, 0);
-    g11[k] = s.grad_u(1, 1);
-    du_dt[k] = s.du_dt.x(), dv_dt[k] = s.du_dt.y();
-    zb_x[k] = s.grad_zb.x(), zb_y[k] = s.grad_zb.y();
   }
 };
 

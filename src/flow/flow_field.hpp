@@ -28,6 +28,8 @@ struct BodyReaction {
   Vec2 force;         // - F_x: the force the body exerts on the water [N]
 };
 
+struct BatchFlow;  // flow_batch.hpp
+
 class FlowField {
  public:
   virtual ~FlowField() = default;
@@ -36,6 +38,13 @@ class FlowField {
   /// [time_begin(), time_end()] (states linearly interpolated in between, spec 5 step 2).
   /// `hint` is an element index from the last call for this point (-1: unknown); it is updated.
   virtual FlowSample sample(const Vec2& p, double t, int& hint) const = 0;
+
+  /// The flow at the batch_width (flow_batch.hpp) points (x[k], y[k]) at times t[k]: lane k is
+  /// sample({x[k], y[k]}, t[k], hints[k]) to the bit where active[k] (hints[k] updated the same
+  /// way), outside with every field zero elsewhere. This one samples point by point; the
+  /// engines' fields locate the points and interpolate for the whole batch at once.
+  virtual void sample_batch(const double* x, const double* y, const double* t, const bool* active,
+                            int* hints, BatchFlow& out) const;
 
   /// The interval of the current flow step: samples are valid for t in [begin, end].
   virtual double time_begin() const = 0;

@@ -105,6 +105,21 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(&mesh) {
     }
   }
 
+  // The corners of each element for locate_batch's check of a hint.
+  const double stale = 4.0 * cell_.norm();  // [m] locate's bound on a hint's distance
+  hint_corners_.resize(8 * static_cast<std::size_t>(element_count));
+  for (int e = 0; e < element_count; ++e) {
+    const auto& el = mesh.elements[e];
+    const Vec2 &a = mesh.nodes[el[0]], &b = mesh.nodes[el[1]], &d = mesh.nodes[el[2]];
+    double* g = &hint_corners_[8 * static_cast<std::size_t>(e)];
+    g[0] = a.x(), g[1] = a.y(), g[2] = b.x(), g[3] = b.y(), g[4] = d.x(), g[5] = d.y();
+    g[6] = 1.0 / (2.0 * mesh.area[e]);
+    // A point within eps of a straight triangle is within (1 + 3 eps) of its farthest corner
+    // from corner 0; the factor 1 + 1e-6 covers that and the round-off of the distances.
+    const double reach = std::max((b - a).norm(), (d - a).norm()) * (1.0 + 1e-6);  // [m]
+    g[7] = !curved_[e] && reach < stale ? 1.0 : 0.0;
+  }
+
   // Seed of a bucket: of the elements it lists, the one whose centroid is nearest its centre;
   // an empty bucket (in a hole, beyond a bank) takes the seed of the nearest listed bucket
   // (breadth-first over the grid).
@@ -223,6 +238,28 @@ Location PointLocator::locate(const Vec2& p, int hint) const {
   outside.boundary_edge = w.boundary_edge;
   if (w.boundary_edge >= 0) outside.boundary_group = mesh_->boundary[w.boundary_edge].group;
   return outside;
+}
+
+void PointLocator::locate_batch(int n, const double* x, const double* y, const bool* active,
+                                const int* hints, Location* out) const {
+  const int element_count = mesh_->element_count();
+  for (int k = 0; k < n; ++k) {
+    if (!active[k]) continue;
+    const int e = hints[k];
+    const Vec2 p(x[k], y[k]);
+    if (e >= 0 && e < element_count) {
+      const double* g = &hint_corners_[8 * static_cast<std::size_t>(e)];
+      if (g[7] != 0.0) {  // edge_coordinates and reference_coordinates of a straight element
+        const Vec2 a = Vec2(g[0], g[1]) - p, b = Vec2(g[2], g[3]) - p, d = Vec2(g[4], g[5]) - p;
+        const double c0 = cross(a, b) * g[6], c1 = cross(b, d) * g[6], c2 = cross(d, a) * g[6];
+        if (c0 >= -eps && c1 >= -eps && c2 >= -eps) {
+          out[k] = Location{.element = e, .r = c2, .s = c0, .inside = true};
+          continue;
+        }
+      }
+    }
+    out[k] = locate(p, e);
+  }
 }
 
 Location PointLocator::locate_brute_force(const Vec2& p) const {

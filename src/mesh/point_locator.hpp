@@ -37,6 +37,14 @@ class PointLocator {
   /// far from p: cold start from the bucket grid). Thread-safe (const, no shared state).
   Location locate(const Vec2& p, int hint = -1) const;
 
+  /// locate(p_k, hints[k]) for the points p_k = (x[k], y[k]) with active[k], k < n, into out[k]
+  /// (the same elements and bits). A point still in its hint's straight element, as a body's
+  /// point mostly is from one Runge-Kutta stage to the next, is found there from a flat copy of
+  /// the element's corners without the bucket and stale-hint checks, which cannot change the
+  /// answer there; the others walk as locate does.
+  void locate_batch(int n, const double* x, const double* y, const bool* active, const int* hints,
+                    Location* out) const;
+
   /// The first element containing p by a scan of all elements: O(N), for tests and benchmarks.
   /// When outside, no boundary edge is named (boundary_edge = boundary_group = -1).
   Location locate_brute_force(const Vec2& p) const;
@@ -77,6 +85,10 @@ class PointLocator {
   std::vector<int> bucket_begin_;  // CSR: elements overlapping bucket b are
   std::vector<int> bucket_elements_;  // bucket_elements_[bucket_begin_[b] .. bucket_begin_[b+1])
   int max_steps_ = 0;                 // step cap of one walk before the fallback
+  // Per element, 8 numbers (one cache line): the corners x0 y0 x1 y1 x2 y2 [m], 1 / (2 A)
+  // [m^-2] as edge_coordinates computes it, and 1 when a point in the element is never a stale
+  // hint's (straight, and every point of it within 4 bucket diagonals of corner 0), else 0.
+  std::vector<double> hint_corners_;
 };
 
 }  // namespace flotsam

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 
@@ -153,6 +155,121 @@ TEST(PointLocator, WalkTakesFewStepsForAPointMovingAFractionOfAnElement) {
   const double average = static_cast<double>(steps) / queries;
   RecordProperty("average_steps", std::to_string(average));
   EXPECT_LT(average, 3.0);
+}
+
+// locate_batch against locate, lane by lane: the same Location to the bit (element, inside,
+// (r, s), curved, boundary edge and group, steps) for 8 points at a time, from cached, fresh,
+// stale and invalid hints, at random points (holes, beyond the banks), on edges and vertices.
+void expect_batch_equals_locate(const Mesh& mesh, const Vec2& low, const Vec2& high,
+                                std::uint32_t seed) {
+  const PointLocator locator(mesh);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> x(low.x(), high.x()), y(low.y(), high.y()), unit(0, 1);
+  std::uniform_int_distribution<int> element(0, mesh.element_count() - 1), choice(0, 7);
+  constexpr int n = 8;
+  int cached[n] = {-1, -1, -1, -1, -1, -1, -1, -1}, failures = 0, fast = 0;
+  double px[n] = {}, py[n] = {};
+  for (int b = 0; b < 4000; ++b) {
+    bool active[n];
+    int hints[n];
+    for (int k = 0; k < n; ++k) {
+      const int e = element(random), kind = choice(random);
+      const auto& el = mesh.elements[e];
+      Vec2 p(x(random), y(random));
+      if (kind <= 1)  // on an edge
+        p = mesh.nodes[el[kind]] + unit(random) * (mesh.nodes[el[kind + 1]] - mesh.nodes[el[kind]]);
+      else if (kind == 2)  // a vertex or a mid node
+        p = mesh.nodes[el[choice(random) % 6]];
+      else if (kind <= 5 && cached[k] >= 0)  // a short move, as a body's between two stages
+        p = Vec2(px[k], py[k]) + 0.05 * Vec2(unit(random) - 0.5, unit(random) - 0.5);
+      px[k] = p.x(), py[k] = p.y();
+      active[k] = choice(random) != 0;
+      const int h = choice(random);
+      hints[k] = h < 4 ? cached[k] : h < 5 ? e : h < 6 ? -1 : h < 7 ? mesh.element_count() : e / 2;
+    }
+    Location batch[n];
+    locator.locate_batch(n, px, py, active, hints, batch);
+    for (int k = 0; k < n; ++k) {
+      if (!active[k]) continue;
+      const Location one = locator.locate({px[k], py[k]}, hints[k]);
+      const Location& got = batch[k];
+      const bool same =
+          got.element == one.element && got.inside == one.inside &&
+          std::bit_cast<std::uint64_t>(got.r) == std::bit_cast<std::uint64_t>(one.r) &&
+          std::bit_cast<std::uint64_t>(got.s) == std::bit_cast<std::uint64_t>(one.s) &&
+          got.curved == one.curved && got.boundary_edge == one.boundary_edge &&
+          got.boundary_group == one.boundary_group && got.steps == one.steps;
+      if (!same && ++failures <= 5)
+        ADD_FAILURE() << "point (" << px[k] << ", " << py[k] << ") hint " << hints[k]
+                      << ": batch element " << got.element << ", locate " << one.element;
+      fast += one.inside && one.element == hints[k] ? 1 : 0;
+      if (one.element >= 0) cached[k] = one.element;
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(fast, 2000);  // found in the hint: the path without the walk was taken
+}
+
+TEST(PointLocator, BatchLocatesAsLocateOnAMeshWithHoles) {
+  expect_batch_equals_locate(make_holey_mesh(2), {-1.0, -1.0}, {13.0, 9.0}, 3);
+}
+
+TEST(PointLocator, BatchLocatesAsLocateOnCurvedElements) {
+  expect_batch_equals_locate(make_curved_square_mesh(), {-0.1, -0.1}, {1.1, 1.1}, 4);
+}
+
+// The walk from a body's last element (locate_batch with the cached element as hint) finds the
+// element a fresh search finds (from the bucket grid; a scan of all elements), for a point in
+// one element only; for a point on an edge or a vertex, an element that holds it, as the fresh
+// search does.
+TEST(PointLocator, CachedStartWalkFindsTheElementOfAFreshSearch) {
+  const int n = 4;
+  const double h = 1.0 / n;  // [m] cell size
+  const Mesh mesh = make_holey_mesh(n);
+  const PointLocator locator(mesh);
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi), unit(0.0, 1.0);
+  constexpr int bodies = 8;
+  double px[bodies], py[bodies];
+  int cached[bodies];
+  const bool active[bodies] = {true, true, true, true, true, true, true, true};
+  for (int k = 0; k < bodies; ++k) {
+    px[k] = 0.5 + 1.3 * k, py[k] = 0.5;
+    cached[k] = locator.locate({px[k], py[k]}).element;
+  }
+  int generic = 0, shared = 0;
+  for (int step = 0; step < 2000; ++step) {
+    for (int k = 0; k < bodies; ++k) {  // a move of up to half a cell, or onto a vertex
+      Vec2 next;
+      do {
+        const double a = angle(random);
+        next = Vec2(px[k], py[k]) + 0.5 * h * unit(random) * Vec2(std::cos(a), std::sin(a));
+        if (step % 50 == k) next = (next / h).array().round().matrix() * h;  // a grid vertex
+      } while (!locator.locate_brute_force(next).inside);
+      px[k] = next.x(), py[k] = next.y();
+    }
+    Location walked[bodies];
+    locator.locate_batch(bodies, px, py, active, cached, walked);
+    for (int k = 0; k < bodies; ++k) {
+      const Vec2 p(px[k], py[k]);
+      const Location fresh = locator.locate(p, -1);
+      const Location scan = locator.locate_brute_force(p);
+      ASSERT_TRUE(walked[k].inside && fresh.inside && scan.inside);
+      int holding = 0;
+      for (int e = 0; e < mesh.element_count(); ++e) holding += locator.contains(e, p) ? 1 : 0;
+      if (holding == 1) {
+        ++generic;
+        EXPECT_EQ(walked[k].element, fresh.element);
+        EXPECT_EQ(walked[k].element, scan.element);
+      } else {
+        ++shared;
+        EXPECT_TRUE(locator.contains(walked[k].element, p));
+      }
+      cached[k] = walked[k].element;
+    }
+  }
+  EXPECT_GT(generic, 10000);
+  EXPECT_GT(shared, 200);  // on grid vertices
 }
 
 TEST(PointLocator, CurvedElementsUseTheirSubTrianglesAndInvertTheP2Map) {

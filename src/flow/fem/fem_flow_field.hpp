@@ -19,6 +19,9 @@ class FemFlowField final : public FlowField {
   explicit FemFlowField(ShallowWaterSolver& solver);
 
   FlowSample sample(const Vec2& p, double t, int& hint) const override;
+  /// fem_batch_sample.cpp: sample's interpolation for the batch's points in vector loops.
+  void sample_batch(const double* x, const double* y, const double* t, const bool* active,
+                    int* hints, BatchFlow& out) const override;
   double time_begin() const override { return solver_.previous_state().time; }
   double time_end() const override { return solver_.time(); }
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;

@@ -32,6 +32,9 @@ class FvFlowField final : public FlowField {
   void reset_to_state();
 
   FlowSample sample(const Vec2& p, double t, int& hint) const override;
+  /// fv_batch_sample.cpp: sample's reconstruction for the batch's points in vector loops.
+  void sample_batch(const double* x, const double* y, const double* t, const bool* active,
+                    int* hints, BatchFlow& out) const override;
   double time_begin() const override { return t0_; }
   double time_end() const override { return t1_; }
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;

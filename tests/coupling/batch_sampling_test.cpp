@@ -1,0 +1,161 @@
+// Verifies FlowField::sample_batch in both engines' fields (fem_batch_sample.cpp,
+// fv_batch_sample.cpp): every lane of a batch is, bit for bit, what sample gives at that point,
+// time and hint, with the same updated hint; on Gmsh's channel with two piers (curved elements
+// on the circles, points in the piers and beyond the banks), at random points, on element edges
+// and vertices, from fresh, cached, stale and invalid hints, at times in and beyond the step, in
+// a flow that moves and, for the finite-volume engine, over a bed that rises out of the water
+// (dry cells).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <random>
+
+#include "coupling/flow_engines.hpp"
+#include "flow/flow_batch.hpp"
+#include "mesh/mesh_generator.hpp"
+
+namespace flotsam {
+namespace {
+
+Mesh channel_with_piers() {
+  MeshSource source;
+  source.kind = MeshSource::Kind::channel;
+  source.channel = {.length = 200,
+                    .width = 60,
+                    .piers = {{{60, 30}, 10}, {{140, 25}, 8}},
+                    .mesh_size = 8,
+                    .pier_mesh_size = 2,
+                    .refine_distance = 20};
+  return generate_mesh(source);
+}
+
+/// A moving flow over a sloping bed, stepped twice, so that the step's two states differ. The
+/// finite-volume bed rises above the water for x > 150 m (dry cells); the FEM's stays under it.
+std::unique_ptr<FlowEngine> stepped_engine(const Mesh& mesh, FlowEngineKind kind) {
+  Case c;
+  c.name = "batch_sampling";
+  c.mesh.kind = MeshSource::Kind::file;
+  c.flow.engine = kind;
+  c.flow.initial_eta_start = c.flow.initial_eta_end = 1.0;
+  c.flow.initial_u = Expression("0.4 + 0.002*y", "test");
+  c.flow.initial_v = Expression("0.05*sin(x/20)", "test");
+  c.flow.viscosity = 0.01;
+  c.bed.kind = BedConfig::Kind::expression;
+  c.bed.expression = Expression(
+      kind == FlowEngineKind::fv ? "-2 + 0.02*x - 0.003*y" : "-3 + 0.005*x - 0.003*y", "test");
+  c.time = {.end = 10.0, .step = 0.5, .mode = CouplingMode::one_way};
+  std::unique_ptr<FlowEngine> engine = make_flow_engine(mesh, c);
+  engine->initialize();
+  engine->step(0.5);
+  engine->step(0.5);
+  return engine;
+}
+
+/// The bits of every lane of a and b are the same.
+int lanes_differing(const BatchFlow& a, const BatchFlow& b) {
+  const Lanes* fields[2][13] = {{&a.inside, &a.H, &a.u, &a.v, &a.g00, &a.g01, &a.g10, &a.g11,
+                                 &a.du_dt, &a.dv_dt, &a.zb_x, &a.zb_y, &a.inside},
+                                {&b.inside, &b.H, &b.u, &b.v, &b.g00, &b.g01, &b.g10, &b.g11,
+                                 &b.du_dt, &b.dv_dt, &b.zb_x, &b.zb_y, &b.inside}};
+  int differing = 0;
+  for (int k = 0; k < batch_width; ++k) {
+    bool same = true;
+    for (int f = 0; f < 12; ++f)
+      same = same && std::bit_cast<std::uint64_t>((*fields[0][f])[k]) ==
+                         std::bit_cast<std::uint64_t>((*fields[1][f])[k]);
+    differing += same ? 0 : 1;
+  }
+  return differing;
+}
+
+struct BatchCounts {
+  int batches = 0, inside = 0, outside = 0, dry = 0, curved = 0, on_edges = 0;
+};
+
+/// Random batches of points and hints: sample_batch against sample, lane by lane.
+BatchCounts compare_batches(const Mesh& mesh, const FlowField& field, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> x(-10.0, 210.0), y(-10.0, 70.0), unit(0.0, 1.0);
+  std::uniform_int_distribution<int> element(0, mesh.element_count() - 1), choice(0, 7);
+  const double t0 = field.time_begin(), span = field.time_end() - t0;
+  BatchCounts counts;
+  std::vector<int> cached(batch_width, -1);  // each lane's element from its last point
+  for (int b = 0; b < 3000; ++b) {
+    alignas(64) Lanes px, py, t;
+    bool active[batch_width];
+    int hints[batch_width], expected_hints[batch_width];
+    for (int k = 0; k < batch_width; ++k) {
+      Vec2 p(x(random), y(random));
+      const int e = element(random);
+      const auto& el = mesh.elements[e];
+      const int kind = choice(random);
+      if (kind == 0 || kind == 1) {  // on an edge (a straight edge, or a curved one's chord)
+        const int j = choice(random) % 3;
+        p = mesh.nodes[el[j]] + unit(random) * (mesh.nodes[el[(j + 1) % 3]] - mesh.nodes[el[j]]);
+        ++counts.on_edges;
+      } else if (kind == 2) {  // a vertex or a mid node
+        p = mesh.nodes[el[choice(random) % 6]];
+        ++counts.on_edges;
+      } else if (kind == 3 && cached[k] >= 0) {  // a short move from the last point
+        p = Vec2(px[k], py[k]) + Vec2(unit(random) - 0.5, unit(random) - 0.5);
+      }
+      px[k] = p.x(), py[k] = p.y();
+      t[k] = t0 + (1.2 * unit(random) - 0.1) * span;  // beyond the step too: clamped
+      active[k] = choice(random) != 0;
+      const int hint_kind = choice(random);
+      hints[k] = hint_kind < 3   ? cached[k]                 // the lane's last element
+                 : hint_kind < 5 ? e                         // an element near or far
+                 : hint_kind < 6 ? -1                        // unknown
+                 : hint_kind < 7 ? mesh.element_count() + 3  // invalid
+                                 : element(random);          // stale
+    }
+    BatchFlow expected, batch;
+    const FlowSample outside{.inside = false};
+    for (int k = 0; k < batch_width; ++k) {
+      expected_hints[k] = hints[k];
+      expected.set(k, active[k] ? field.sample({px[k], py[k]}, t[k], expected_hints[k]) : outside);
+    }
+    field.sample_batch(px, py, t, active, hints, batch);
+    EXPECT_EQ(lanes_differing(expected, batch), 0) << "batch " << b;
+    for (int k = 0; k < batch_width; ++k) {
+      EXPECT_EQ(hints[k], expected_hints[k]) << "batch " << b << " lane " << k;
+      if (!active[k]) continue;
+      cached[k] = hints[k];
+      if (batch.inside[k] == 0.0) {
+        ++counts.outside;
+        continue;
+      }
+      ++counts.inside;
+      counts.dry += batch.H[k] == 0.0 ? 1 : 0;
+      counts.curved += hints[k] >= 0 && mesh.is_curved(hints[k]) ? 1 : 0;
+    }
+    ++counts.batches;
+  }
+  return counts;
+}
+
+TEST(BatchSampling, FemBatchEqualsPointByPointBitForBit) {
+  const Mesh mesh = channel_with_piers();
+  const auto engine = stepped_engine(mesh, FlowEngineKind::fem);
+  ASSERT_LT(engine->field().time_begin(), engine->field().time_end());
+  const BatchCounts counts = compare_batches(mesh, engine->field(), 11);
+  EXPECT_GT(counts.inside, 10000);
+  EXPECT_GT(counts.outside, 1000);  // in the piers and beyond the banks
+  EXPECT_GT(counts.curved, 100);
+  EXPECT_GT(counts.on_edges, 5000);
+}
+
+TEST(BatchSampling, FiniteVolumeBatchEqualsPointByPointBitForBit) {
+  const Mesh mesh = channel_with_piers();
+  const auto engine = stepped_engine(mesh, FlowEngineKind::fv);
+  ASSERT_LT(engine->field().time_begin(), engine->field().time_end());
+  const BatchCounts counts = compare_batches(mesh, engine->field(), 12);
+  EXPECT_GT(counts.inside, 10000);
+  EXPECT_GT(counts.outside, 1000);
+  EXPECT_GT(counts.dry, 1000);  // x > 150 m: the bed above the water
+  EXPECT_GT(counts.on_edges, 5000);
+}
+
+}  // namespace
+}  // namespace flotsam
