@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <random>
 
+#include "../support/two_pier_channel.hpp"
 #include "coupling/flow_engines.hpp"
 #include "flow/flow_batch.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -19,15 +20,7 @@ namespace flotsam {
 namespace {
 
 Mesh channel_with_piers() {
-  MeshSource source;
-  source.kind = MeshSource::Kind::channel;
-  source.channel = {.length = 200,
-                    .width = 60,
-                    .piers = {{{60, 30}, 10}, {{140, 25}, 8}},
-                    .mesh_size = 8,
-                    .pier_mesh_size = 2,
-                    .refine_distance = 20};
-  return generate_mesh(source);
+  return generate_mesh(test::two_pier_channel());
 }
 
 /// A moving flow over a sloping bed, stepped twice, so that the step's two states differ. The

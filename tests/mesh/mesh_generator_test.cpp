@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "../support/scratch_path.hpp"
+#include "../support/two_pier_channel.hpp"
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -38,18 +39,6 @@ MeshSource paper_channel() {
 const Mesh& paper_mesh() {
   static const Mesh mesh = generate_mesh(paper_channel());
   return mesh;
-}
-
-MeshSource small_channel() {
-  MeshSource source;
-  source.kind = MeshSource::Kind::channel;
-  source.channel = {.length = 200,
-                    .width = 60,
-                    .piers = {{{60, 30}, 10}, {{140, 25}, 8}},
-                    .mesh_size = 8,
-                    .pier_mesh_size = 2,
-                    .refine_distance = 20};
-  return source;
 }
 
 const BoundaryGroupSummary& group(const MeshSummary& summary, const std::string& name) {
@@ -122,8 +111,8 @@ TEST(MeshGenerator, ChannelLengthsAndAreaMatchTheGeometry) {
 }
 
 TEST(MeshGenerator, GenerationIsDeterministic) {
-  const Mesh first = generate_mesh(small_channel());
-  const Mesh second = generate_mesh(small_channel());
+  const Mesh first = generate_mesh(test::two_pier_channel());
+  const Mesh second = generate_mesh(test::two_pier_channel());
   ASSERT_EQ(first.node_count(), second.node_count());
   EXPECT_EQ(first.nodes, second.nodes);
   EXPECT_EQ(first.elements, second.elements);
@@ -132,8 +121,8 @@ TEST(MeshGenerator, GenerationIsDeterministic) {
 TEST(MeshGenerator, ConcurrentGenerationsAreSerializedAndAgree) {
   // Gmsh is one global state: the session mutex makes two threads take turns.
   Mesh first, second;
-  std::thread other([&] { first = generate_mesh(small_channel()); });
-  second = generate_mesh(small_channel());
+  std::thread other([&] { first = generate_mesh(test::two_pier_channel()); });
+  second = generate_mesh(test::two_pier_channel());
   other.join();
   EXPECT_EQ(first.nodes, second.nodes);
   EXPECT_EQ(first.elements, second.elements);
@@ -195,7 +184,7 @@ TEST(MeshGenerator, PolygonKeepsItsSidesGroupsAndArea) {
 
 TEST(MeshGenerator, FileSourceReadsTheWrittenMesh) {
   const auto path = test::scratch_path("flotsam_generator.msh").string();
-  const Mesh generated = generate_mesh(small_channel(), path);
+  const Mesh generated = generate_mesh(test::two_pier_channel(), path);
   MeshSource file;
   file.kind = MeshSource::Kind::file;
   file.file = path;
@@ -214,13 +203,13 @@ TEST(MeshGenerator, FileSourceReadsTheWrittenMesh) {
 }
 
 TEST(MeshGenerator, OverlappingPiersAreAnErrorNamingThem) {
-  MeshSource source = small_channel();
+  MeshSource source = test::two_pier_channel();
   source.channel.piers = {{{60, 30}, 10}, {{100, 30}, 10}, {{115, 30}, 6}};
   EXPECT_THAT(error_of(source), HasSubstr("pier_2 and pier_3 overlap"));
 }
 
 TEST(MeshGenerator, PierReachingABankIsAnErrorNamingIt) {
-  MeshSource source = small_channel();
+  MeshSource source = test::two_pier_channel();
   source.channel.piers = {{{60, 30}, 10}, {{140, 55}, 8}};
   EXPECT_THAT(error_of(source), HasSubstr("pier_2 (centre (140, 55) m, radius 8 m) reaches the "
                                           "left bank (y = 60 m)"));
@@ -243,7 +232,7 @@ TEST(MeshGenerator, BadPolygonsAreErrorsNamingTheSides) {
 
 TEST(MeshGenerator, UnwritableMshPathIsAnErrorNamingIt) {
   const std::string path = "/nonexistent_folder_flotsam/mesh.msh";
-  EXPECT_THAT(error_of(small_channel(), path), HasSubstr(path));
+  EXPECT_THAT(error_of(test::two_pier_channel(), path), HasSubstr(path));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "../support/scratch_path.hpp"
+#include "../support/two_pier_channel.hpp"
 #include "core/error.hpp"
 #include "mesh/gmsh_session.hpp"
 #include "mesh/mesh_generator.hpp"
@@ -183,14 +184,7 @@ TEST(MshReader, ThreeNodeTrianglesGetMidNodesAtEdgeMidpoints) {
 TEST(MshReader, AllFourMshFlavoursReadBackTheSameMesh) {
   // The same generated channel with two piers written as MSH 2.2 / 4.1, ASCII / binary.
   TempFolder folder;
-  MeshSource source;
-  source.kind = MeshSource::Kind::channel;
-  source.channel = {.length = 200,
-                    .width = 60,
-                    .piers = {{{60, 30}, 10}, {{140, 25}, 8}},
-                    .mesh_size = 8,
-                    .pier_mesh_size = 3,
-                    .refine_distance = 20};
+  const MeshSource source = test::two_pier_channel(3);
   const Mesh reference = generate_mesh(source);
   for (const double version : {2.2, 4.1})
     for (const bool binary : {false, true}) {

@@ -3,6 +3,7 @@
 // exactly when the scan finds none: on a mesh with square, polygonal and U-shaped holes, and on
 // curved P2 elements.
 #include "mesh/point_locator.hpp"
+#include "../support/two_pier_channel.hpp"
 
 #include <gtest/gtest.h>
 
@@ -315,14 +316,7 @@ TEST(PointLocator, ChannelWithTwoCircularPiersFromTheMeshGenerator) {
   // circles. The chords of a circle lie inside it, so every point of the channel outside the
   // piers' circles is inside the mesh (sub-triangles, P-33), and points well inside a circle
   // (beyond the chords' sagitta) are outside.
-  MeshSource source;
-  source.kind = MeshSource::Kind::channel;
-  source.channel = {.length = 200,
-                    .width = 60,
-                    .piers = {{{60, 30}, 10}, {{140, 25}, 8}},
-                    .mesh_size = 8,
-                    .pier_mesh_size = 2,
-                    .refine_distance = 20};
+  const MeshSource source = test::two_pier_channel();
   const Mesh mesh = generate_mesh(source);
   const PointLocator locator(mesh);
   const auto& piers = source.channel.piers;
