@@ -20,8 +20,10 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -314,8 +316,22 @@ struct MshFile {
     return std::binary_search(node_tags.begin(), node_tags.end(), tag);
   }
   std::vector<long> element_tags;
+  std::map<std::pair<int, long>, int> entity_type;  // (dimension, entity tag) -> element type
   MshCounts counts;
 };
+
+// Gmsh 4.8 keeps one element type per entity: a surface holding both 3- and 6-node triangles
+// corrupts its memory while it reads the file (tests/fuzz/gmsh_crashes), and flotsam reads
+// one kind of triangle and of line per mesh anyway. `element` names the element or block.
+void one_type_per_entity(Cursor& in, MshFile& msh, int dim, long entity, const ElementType& type,
+                         const std::string& element) {
+  const auto [at, added] = msh.entity_type.try_emplace({dim, entity}, type.type);
+  if (!added && at->second != type.type)
+    in.fail(
+        "{} is of type {}, but entity {} of dimension {} already holds elements of type {} "
+        "(Gmsh reads one element type per entity; flotsam one order of triangles and lines)",
+        element, type.type, entity, dim, at->second);
+}
 
 // 1. The format line ("4.1 0 8", read by Gmsh with fgets) and, in a binary file, the integer 1
 // in the file's byte order.
@@ -412,13 +428,17 @@ void read_entities(Cursor& in, MshFile& msh) {
 }
 
 // A 4.1 block header's entity: its dimension and tag, which $Entities must define.
-int block_entity(Cursor& in, const MshFile& msh, long block) {
+struct BlockEntity {
+  int dim;
+  long tag;
+};
+BlockEntity block_entity(Cursor& in, const MshFile& msh, long block) {
   const int dim = static_cast<int>(in.integer(What("block {}'s entity dimension", block), 0, 3));
   const long tag = in.integer(What("block {}'s entity tag", block), 1, largest_tag);
   if (!msh.entities[dim].contains(tag))
     in.fail("block {} belongs to entity {} of dimension {}, which $Entities does not define", block,
             tag, dim);
-  return dim;
+  return {dim, tag};
 }
 
 // Sorts `tags`, refuses a repeated one, and in 4.1 compares the smallest and largest with the
@@ -508,12 +528,13 @@ void read_elements(Cursor& in, MshFile& msh) {
     const long min_tag = in.size("the smallest element tag", 0, largest_tag);
     const long max_tag = in.size("the largest element tag", 0, largest_tag);
     for (long b = 1; b <= blocks; ++b) {
-      const int dim = block_entity(in, msh, b);
+      const auto [dim, entity] = block_entity(in, msh, b);
       const ElementType& type =
           known_type(in, in.integer(What("block {}'s element type", b), 1, largest_tag));
       if (type.dim != dim)
         in.fail("block {} holds elements of type {} (dimension {}) in an entity of dimension {}", b,
                 type.type, type.dim, dim);
+      one_type_per_entity(in, msh, dim, entity, type, fmt::format("block {}", b));
       const long n = in.size(What("block {}'s number of elements", b), 0, largest_count);
       if (n > left(total))
         in.fail("block {} holds {} elements, more than the {} the header declares are left", b, n,
@@ -534,7 +555,8 @@ void read_elements(Cursor& in, MshFile& msh) {
     };
     const auto physical_elementary_and_nodes = [&](long tag, const ElementType& type) {
       in.integer(What("element {}'s physical tag", tag), 0, largest_tag);
-      in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
+      const long entity = in.integer(What("element {}'s elementary tag", tag), 1, largest_tag);
+      one_type_per_entity(in, msh, type.dim, entity, type, fmt::format("element {}", tag));
       for (int k = 0; k < type.nodes; ++k) {
         const long node = in.integer(What("node {} of element {}", k + 1, tag), 1, largest_tag);
         if (!msh.has_node(node))

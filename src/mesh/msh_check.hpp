@@ -17,10 +17,11 @@
 // Checked in every section: each number parses in full (an integer in its range, a finite real),
 // the declared counts match the entries, tags are positive and unique, node blocks hold no
 // parametric coordinates, every element block's entity exists and has the element type's
-// dimension, every element's node tags exist, a 4.1 section's declared smallest and largest tags
-// are its tags', and the element types are ones Gmsh 4.8 knows (points, lines, triangles,
-// quadrangles, tetrahedra, hexahedra, prisms, pyramids of order 1 and 2). An ASCII element is one
-// line (Gmsh reads its node tags with one fgets).
+// dimension, an entity holds elements of one type only (Gmsh 4.8 corrupts its memory reading a
+// surface of both 3- and 6-node triangles), every element's node tags exist, a 4.1 section's
+// declared smallest and largest tags are its tags', and the element types are ones Gmsh 4.8 knows
+// (points, lines, triangles, quadrangles, tetrahedra, hexahedra, prisms, pyramids of order 1 and
+// 2). An ASCII element is one line (Gmsh reads its node tags with one fgets).
 #include <cstddef>
 #include <string>
 #include <string_view>

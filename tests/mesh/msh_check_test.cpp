@@ -160,6 +160,12 @@ TEST(MshCheck, EachDamageIsRefusedNamingTheFileTheLineAndWhatWasExpected) {
        "entity 1 of dimension 1 is bounded by entity 4 of dimension 0"},
       {"an element type Gmsh does not know", "2 1 2 2\n", "2 1 99 2\n", "2 1 99 2",
        "element type 99 is not one flotsam reads"},
+      {"3- and 6-node triangles in one surface (Gmsh 4.8 corrupts its memory)",
+       "$Elements\n2 6 1 6\n1 1 1 4\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n2 1 2 2\n5 1 2 3\n6 1 3 4\n",
+       "$Elements\n3 6 1 6\n1 1 1 4\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n2 1 2 1\n5 1 2 3\n"
+       "2 1 9 1\n6 1 3 4 2 3 4\n",
+       "2 1 9 1",
+       "block 3 is of type 9, but entity 1 of dimension 2 already holds elements of type 2"},
   };
   for (const Damage& d : damages) {
     SCOPED_TRACE(d.name);
