@@ -6,7 +6,6 @@
 #include "contact/contact_world.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <random>
 
@@ -47,18 +46,9 @@ TEST(ContactWorld, AStruckLogIsNotPushedIntoAPierItsMarginDidNotReach) {
 // 600 logs in loose rows before 30 piers, thrown about at up to 1 m/s: many islands at once
 // (30 steps: a few seconds under the sanitizers).
 BodySet thrown_logs_after(int threads, int steps, int& most_islands) {
-  JamScene scene = test::thrown_jam_scene(600, 30, 0.05);  // row gap [m]
-  const int old_threads = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  ContactWorld world(jam_contact_config());
-  most_islands = 0;
-  for (int step = 0; step < steps; ++step) {
-    world.step(scene.bodies, scene.walls, move_jam_logs(scene));
-    if (world.profile().contacts >= 256)
-      most_islands = std::max(most_islands, world.profile().islands);
-  }
-  omp_set_num_threads(old_threads);
-  return scene.bodies;
+  const auto islands = [](const ContactProfile& p) { return p.contacts >= 256 ? p.islands : 0; };
+  return test::stepped_on_threads(test::thrown_jam_scene(600, 30, 0.05),  // row gap [m]
+                                  jam_contact_config(), threads, steps, islands, most_islands);
 }
 
 TEST(ContactWorld, IslandsSolvedInParallelGiveTheSameResultOnOneAndTwoThreads) {

@@ -6,7 +6,6 @@
 #include "contact/island_sleep.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include "../support/thrown_jam.hpp"
 #include "contact/contact_world.hpp"
@@ -151,17 +150,9 @@ TEST(IslandSleep, ASleepingColumnWakesWhenALogStrikesIt) {
 // The jam of 50 logs before two piers (jam_scene.hpp), thrown about, with sleeping: 1 and 2
 // threads end in the same states, bit for bit, with islands asleep.
 BodySet thrown_logs_after(int threads, int& sleeping) {
-  const int old_threads = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  JamScene scene = test::thrown_jam_scene(50, 2, 0.3);
-  ContactWorld world(sleeping_config());
-  sleeping = 0;
-  for (int step = 0; step < 2000; ++step) {
-    world.step(scene.bodies, scene.walls, move_jam_logs(scene));
-    sleeping = std::max(sleeping, world.profile().sleeping_islands);
-  }
-  omp_set_num_threads(old_threads);
-  return scene.bodies;
+  const auto asleep = [](const ContactProfile& p) { return p.sleeping_islands; };
+  return test::stepped_on_threads(test::thrown_jam_scene(50, 2, 0.3), sleeping_config(), threads,
+                                  2000, asleep, sleeping);
 }
 
 TEST(IslandSleep, SleepingGivesTheSameResultOnOneAndTwoThreads) {

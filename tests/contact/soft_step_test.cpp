@@ -4,7 +4,6 @@
 #include "contact/soft_step.hpp"
 
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <random>
@@ -142,17 +141,9 @@ TEST(SoftStep, NoContactGainsEnergyAndAFreeCollisionKeepsMomentum) {
 // the same, bit for bit, on 1 and 2 threads. 1,500 logs packed in rows before 31 piers (one
 // island, over 2,000 contacts: the parallel path), thrown about at up to 1 m/s, 10 steps.
 BodySet thrown_logs_after(int threads, int& most_contacts) {
-  JamScene scene = test::thrown_jam_scene(1500, 31, 0.0);  // row gap [m]
-  const int old_threads = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  ContactWorld world(soft_config());
-  most_contacts = 0;
-  for (int step = 0; step < 10; ++step) {
-    world.step(scene.bodies, scene.walls, move_jam_logs(scene));
-    most_contacts = std::max(most_contacts, world.profile().contacts);
-  }
-  omp_set_num_threads(old_threads);
-  return scene.bodies;
+  const auto contacts = [](const ContactProfile& p) { return p.contacts; };
+  return test::stepped_on_threads(test::thrown_jam_scene(1500, 31, 0.0),  // row gap [m]
+                                  soft_config(), threads, 10, contacts, most_contacts);
 }
 
 TEST(SoftStep, ColoursSolvedInParallelGiveTheSameResultOnOneAndTwoThreads) {

@@ -2,8 +2,12 @@
 // A jam scene (contact/jam_scene.hpp) whose logs are thrown about: velocities uniform in
 // [-1, 1] m/s per component and spins in [-0.1, 0.1] rad/s, from a fixed seed, so that runs on
 // different thread counts start alike.
+#include <omp.h>
+
+#include <algorithm>
 #include <random>
 
+#include "contact/contact_world.hpp"
 #include "contact/jam_scene.hpp"
 
 namespace flotsam::test {
@@ -21,6 +25,23 @@ inline JamScene thrown_jam_scene(int log_count, int pier_count, double row_gap /
     scene.bodies.angular_velocity[i] = 0.1 * speed(rng);  // [rad/s]
   }
   return scene;
+}
+
+/// `scene`'s bodies after `steps` contact steps with `config` on `threads` OpenMP threads, each
+/// step pushed by move_jam_logs; `largest` is the largest `measure(world.profile())` of the steps.
+template <class Measure>
+BodySet stepped_on_threads(JamScene scene, const ContactConfig& config, int threads, int steps,
+                           Measure measure, int& largest) {
+  const int old_threads = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  ContactWorld world(config);
+  largest = 0;
+  for (int step = 0; step < steps; ++step) {
+    world.step(scene.bodies, scene.walls, move_jam_logs(scene));
+    largest = std::max(largest, measure(world.profile()));
+  }
+  omp_set_num_threads(old_threads);
+  return scene.bodies;
 }
 
 /// How many bodies of `one` and `two` differ in pose or velocity, compared exactly.
