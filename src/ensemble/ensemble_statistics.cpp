@@ -153,6 +153,13 @@ std::string format_sample(const char* what, const SampleSummary& s, const char* 
       what, s.mean, s.min, s.median, s.p90, s.max, unit, s.count);
 }
 
+/// One line of a proportion and its interval; with no member to count, no estimate.
+std::string format_proportion(const std::string& what, const Proportion& p) {
+  if (p.trials <= 0) return fmt::format("  {:<24}{:>4}/{:<4} no member completed\n", what, 0, 0);
+  return fmt::format("  {:<24}{:>4}/{:<4} p {:.3f}  95% [{:.3f}, {:.3f}]\n", what, p.successes,
+                     p.trials, p.p, p.lower, p.upper);
+}
+
 }  // namespace
 
 std::string format_ensemble_summary(const EnsembleStatistics& statistics,
@@ -174,14 +181,9 @@ std::string format_ensemble_summary(const EnsembleStatistics& statistics,
     else
       s += fmt::format("all members: {} ran, {} failed\n", sweep.members, sweep.failed);
     for (const BlockingEstimate& b : sweep.blocking)
-      s += fmt::format("  blocked {:<16}{:>4}/{:<4} p {:.3f}  95% [{:.3f}, {:.3f}]\n", b.target,
-                       b.blocked.successes, b.blocked.trials, b.blocked.p, b.blocked.lower,
-                       b.blocked.upper);
-    for (const auto& [what, trapped] :
-         {std::pair{std::string(">= 1 trapped"), sweep.trapped_any},
-          std::pair{fmt::format(">= {} trapped", several_trapped), sweep.trapped_several}})
-      s += fmt::format("  {:<24}{:>4}/{:<4} p {:.3f}  95% [{:.3f}, {:.3f}]\n", what,
-                       trapped.successes, trapped.trials, trapped.p, trapped.lower, trapped.upper);
+      s += format_proportion("blocked " + b.target, b.blocked);
+    s += format_proportion(">= 1 trapped", sweep.trapped_any);
+    s += format_proportion(fmt::format(">= {} trapped", several_trapped), sweep.trapped_several);
     s += format_sample("jam size", sweep.jam_size, "bodies");
     s += format_sample("backwater rise", sweep.backwater_rise, "m");
     s += format_sample("travel", sweep.travel, "m");

@@ -52,7 +52,7 @@ case $mode in
     rm resume/member_0002/*.vtu                      # half-written
     touch -d '2000-01-01' resume/member_0000/member.txt
     out=$("$flotsam" ensemble "$case" -o resume -q --no-pictures)
-    echo "$out" | grep -q "ran 2 members, kept 2" || { echo "FAIL: $out"; exit 1; }
+    grep -q "ran 2 members, kept 2" <<<"$out" || { echo "FAIL: $out"; exit 1; }
     [ "$(stat -c %Y resume/member_0000/member.txt)" = "$(date -d 2000-01-01 +%s)" ] \
         || { echo "FAIL: a complete member was run again"; exit 1; }
     same resume ;;
@@ -61,16 +61,19 @@ case $mode in
     sed 's/values: \[4, 20\]/values: [0.3, 20]/' "$case" > failing.yaml
     out=$("$flotsam" ensemble failing.yaml -o failing --overwrite -q --no-pictures)
     echo "$out"
-    echo "$out" | grep -q "4 members (2 per value x 2 values), 2 failed"
-    echo "$out" | grep -q "member_0000 (log_length = 0.3 m, .*seed [0-9]*): .*exceed the shortest"
-    echo "$out" | grep -q "log_length = 20 m: 2 members, 0 failed" ;;
+    grep -q "4 members (2 per value x 2 values), 2 failed" <<<"$out"
+    grep -q "member_0000 (log_length = 0.3 m, .*seed [0-9]*): .*exceed the shortest" <<<"$out"
+    grep -q "log_length = 20 m: 2 members, 0 failed" <<<"$out"
+    # the value whose members all failed gives no estimate (and no NaN)
+    grep -q "blocked bridge_1 *0/0 *no member completed" <<<"$out"
+    ! grep -qiw "nan" <<<"$out" || { echo "FAIL: a NaN in the summary"; exit 1; } ;;
   shared_flow)
     sed 's/mode: two-way/mode: one-way/' "$case" > one_way.yaml
     out=$("$flotsam" ensemble one_way.yaml -o shared --overwrite -q --no-pictures)
-    echo "$out" | grep -q "flow             computed once and shared by the members (one-way" \
+    grep -q "flow             computed once and shared by the members (one-way" <<<"$out" \
         || { echo "FAIL: $out"; exit 1; }
     out=$("$flotsam" ensemble one_way.yaml -o own --overwrite -q --no-pictures --no-shared-flow)
-    echo "$out" | grep -q "flow             computed by each member (--no-shared-flow)" \
+    grep -q "flow             computed by each member (--no-shared-flow)" <<<"$out" \
         || { echo "FAIL: $out"; exit 1; }
     for f in ensemble_summary.txt ensemble_members.csv ensemble_blocking.csv ensemble_bodies.csv \
         member_000{0,1,2,3}/member_000{0,1,2,3}_bodies.csv; do
@@ -115,7 +118,7 @@ case $mode in
     complete=$(ls killed/member_*/member.txt 2>/dev/null | wc -l)
     [ "$complete" -lt 20 ] || { echo "the kill came after the last member"; exit 77; }
     out=$("$flotsam" ensemble killed.yaml -o killed -q --no-pictures)
-    echo "$out" | grep -q "ran $((20 - complete)) members, kept $complete" \
+    grep -q "ran $((20 - complete)) members, kept $complete" <<<"$out" \
         || { echo "FAIL: $out"; exit 1; }
     for f in ensemble_summary.txt ensemble_members.csv ensemble_blocking.csv ensemble_bodies.csv; do
       # (a failed member's message names its case file, in its own folder)
@@ -140,6 +143,6 @@ case $mode in
         "$case" > discharge.yaml
     grep -q "discharge_scale" discharge.yaml
     out=$("$flotsam" ensemble discharge.yaml -o discharge --overwrite -q --no-pictures)
-    echo "$out" | grep -q "flow             computed by each member (discharge_scale varies the flow)" \
+    grep -q "flow             computed by each member (discharge_scale varies the flow)" <<<"$out" \
         || { echo "FAIL: $out"; exit 1; } ;;
 esac
