@@ -7,9 +7,9 @@
 //     =>  eta = H_0 - Omega^2 R^2 / (4 g) exp(-2 r^2 / R^2)
 // is an exact steady state of (M-1) with nu = 0. Tolerance: |L(1000 s) / L(0) - 1| <= 0.5 %
 // at 0.5 m/s (Froude number 0.05), both steps.
-// DISABLED: neither step meets it (2026-11-24: coupled +12.7 %, segregated +13.1 % over
+// DISABLED: neither step meets it (2026-11-24: coupled +12.7 %, segregated +13.6 % over
 // 1,000 s, independent of the step; both gains fall at about first order in h, coupled +2.4 %
-// on 1.25 m cells, segregated +3.7 % on 2.5 m cells; docs/validation.md "Free vortex" has the
+// on 1.25 m cells, segregated +4.1 % on 2.5 m cells; docs/validation.md "Free vortex" has the
 // scaling and the causes); run it with --gtest_also_run_disabled_tests.
 #include <gtest/gtest.h>
 

@@ -4,29 +4,32 @@
 // step (element_assembly.hpp), theta-scheme, advection by characteristics; the coupled (u, eta)
 // system is replaced by a sequence of small ones:
 //
-//   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-(1-theta) g G eta^n) - f k x u^n  (M-20)
-//   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - theta g G eta^n
+//   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-s g G eta^n) - f k x u^n       (M-20)
+//   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - (1-s) g G eta^n
 //                    - (1-theta) K_nu u^n - T_nu(u^n) + F                     (M-21) per component
-//   3. elevation   (M_1/dt + theta^2 g G^T D G - C) d_eta = S - B + G^T H (theta u~ + (1-theta)
-//   u^n)
+//   3. elevation   (M_1/dt + theta^2 g G^T D G - C) d_eta
+//                    = S - B + G^T H (theta u~ + (1-theta) u^n)
 //                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a),  C x = G^T (theta u^n_a x_a)
 //                    (M-22): SPD but for C, the depth's change carried by the current
 //   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
 //
-// M_L is the lumped P2 mass (diagonal scaling, Hinton-Rock-Zienkiewicz: the consistent diagonal
-// scaled to the element's area; row sums would give the P2 vertices zero mass), G the surface
-// slope (3) and, transposed, the continuity flux (9), both integrated with M_L's own nodal
-// quadrature: G_ai = sum over the elements e at node a of m_a^e / |e| integral_e grad M_i, so
-// that M_L^-1 G eta is at every node the mean of its elements' slopes (the exact (N_a, grad M_i)
-// is zero at P2 vertices: their shape functions integrate to zero), K_nu the scalar
-// viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient half explicit, T_nu),
-// P_a the velocity constraint at node a (identity; the tangent projector at slip nodes; zero at
-// velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing (7) is integrated
-// in M_L's quadrature too. The momentum predictor is solved by conjugate gradients preconditioned
-// with its matrix's zero fill-in incomplete Cholesky factor, on the P2 nodes renumbered by
-// locality (reverse Cuthill-McKee). The elevation system is solved by GMRES preconditioned with a
-// CHOLMOD Cholesky factor of an earlier step's SPD part, refactorised when GMRES needs more than
-// max_extra_iterations beyond what it needed after the last factorisation.
+// The slope at t^n is taken in part s = 3/4 - theta/2 at the feet, 1 - s at the node (s = 1/2
+// would centre it along the path; s = 1 - theta, the coupled step's split, leaves a steady error
+// O((theta - 1/2) dt); stability needs s < 1/2 for theta > 1/2: docs/model.md), its increment
+// theta g G d_eta at the node. M_L is the lumped P2 mass (diagonal scaling,
+// Hinton-Rock-Zienkiewicz: the consistent diagonal scaled to the element's area; row sums would
+// give the P2 vertices zero mass), G the surface slope (3) and, transposed, the continuity flux
+// (9), both integrated with M_L's own nodal quadrature: G_ai = sum over the elements e at node a of
+// m_a^e / |e| integral_e grad M_i, so that M_L^-1 G eta is at every node the mean of its elements'
+// slopes (the exact (N_a, grad M_i) is zero at P2 vertices: their shape functions integrate to
+// zero), K_nu the scalar viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient
+// half explicit, T_nu), P_a the velocity constraint at node a (identity; the tangent projector at
+// slip nodes; zero at velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing
+// (7) is integrated in M_L's quadrature too. The momentum predictor is solved by conjugate
+// gradients preconditioned with its matrix's zero fill-in incomplete Cholesky factor, on the P2
+// nodes renumbered by locality (reverse Cuthill-McKee). The elevation system is solved by GMRES
+// preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part, refactorised when
+// GMRES needs more than max_extra_iterations beyond what it needed after the last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
