@@ -63,9 +63,10 @@ Mesh ordered_along_curve(const Mesh& mesh) {
   const double cells_per_metre = box > 0 ? (grid_last + 0.5) / box : 0.0;
   std::vector<Cell> cell(node_count);
   for (int n = 0; n < node_count; ++n)
-    for (int a = 0; a < 2; ++a)
-      cell[n][a] = static_cast<std::uint32_t>(
-          std::clamp((mesh.nodes[n][a] - lo[a]) * cells_per_metre, 0.0, double{grid_last}));
+    for (int a = 0; a < 2; ++a) {
+      const double x = (mesh.nodes[n][a] - lo[a]) * cells_per_metre;  // not a number: cell 0
+      cell[n][a] = x >= 0.0 ? static_cast<std::uint32_t>(std::min(x, double{grid_last})) : 0;
+    }
 
   // Nodes: vertices first, each group along the curve.
   std::vector<std::uint64_t> key(node_count);
