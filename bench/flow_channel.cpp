@@ -8,6 +8,7 @@
 //   <build>/bench/bench_flow_channel compare STATE_A STATE_B
 //   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
 //   <build>/bench/bench_flow_channel section STATE X
+//   <build>/bench/bench_flow_channel fv MESH_SIZE SECONDS
 //
 // steady: solve_steady from still water (at the case's viscosity, or the one given [m^2/s]; mesh
 // size 0: the case's), wall time, residual history and discharge. unsteady: T_END [s] (default
@@ -19,11 +20,13 @@
 // states of the same mesh. scaling: STEPS steps at DT (default 1 s) on the channel with far-field
 // size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step and peak
 // memory (getrusage ru_maxrss). section: eta, u, v of a saved state (of the case's own mesh) every
-// 5 m across the channel at x = X [m]. OMP_NUM_THREADS sets the threads; FLOTSAM_FLOW_ITERATIONS=n
-// the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu KLU instead of UMFPACK
-// (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the approximate inverse of an
-// iterative refinement, or not (all modes; unset: FlowSolverOptions' default),
-// FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all modes but steady),
+// 5 m across the channel at x = X [m]. fv: the finite-volume engine on the scaling's mesh,
+// SECONDS s of flow after the first (advanced a second at a time): CPU time per simulated second
+// and per Courant sub-step, peak memory. OMP_NUM_THREADS sets the threads;
+// FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu KLU
+// instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
+// approximate inverse of an iterative refinement, or not (all modes; unset: FlowSolverOptions'
+// default), FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all modes but steady),
 // FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
 // FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (steady, unsteady;
 // unset: the case's), FLOTSAM_FLOW_TRACE=S a line every S seconds of simulated time with the
@@ -42,6 +45,7 @@
 #include <vector>
 
 #include "flow/fem/shallow_water_solver.hpp"
+#include "flow/fv/fv_solver.hpp"
 #include "mesh/interpolation.hpp"
 #include "mesh/point_locator.hpp"
 #include "paper_channel.hpp"
@@ -331,6 +335,30 @@ int run_scaling(double mesh_size, int steps, double dt) {
   return 0;
 }
 
+int run_fv(double mesh_size, int seconds) {
+  Case c = paper_channel_case(mesh_size, true);
+  c.flow.engine = FlowEngineKind::fv;
+  const auto mesh_start = Clock::now();
+  const Mesh mesh = paper_channel_mesh(c);
+  const double mesh_wall = seconds_since(mesh_start);
+  FiniteVolumeSolver solver(mesh, c);
+  solver.initialize();
+  solver.advance(1.0);
+  const long sub_steps = solver.sub_steps().count;
+  const auto start = Clock::now();
+  const double cpu_start = cpu_seconds();
+  for (int s = 0; s < seconds; ++s) solver.advance(1.0);
+  const double wall = seconds_since(start), cpu = cpu_seconds() - cpu_start;
+  const long taken = solver.sub_steps().count - sub_steps;
+  std::printf(
+      "fv: mesh_size %g m, %d elements, %d threads: mesh %.2f s, %.1f ms per simulated second "
+      "(%.1f ms CPU; %.1f sub-steps, %.3f ms CPU each), peak memory %.1f MiB\n",
+      mesh_size, mesh.element_count(), omp_get_max_threads(), mesh_wall, 1e3 * wall / seconds,
+      1e3 * cpu / seconds, static_cast<double>(taken) / seconds,
+      1e3 * cpu / static_cast<double>(std::max(taken, 1L)), peak_memory_mib());
+  return 0;
+}
+
 }  // namespace
 }  // namespace flotsam
 
@@ -349,6 +377,8 @@ int main(int argc, char** argv) {
     if (args.size() >= 3 && args[0] == "section") return run_section(args[1], number(2, 20.0));
     if (args.size() >= 3 && args[0] == "scaling")
       return run_scaling(number(1, 14.5), static_cast<int>(number(2, 10)), number(3, 1.0));
+    if (args.size() >= 3 && args[0] == "fv")
+      return run_fv(number(1, 14.5), static_cast<int>(number(2, 10)));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;

@@ -3,7 +3,8 @@
 //
 // Numbering. The P1 vertices are nodes 0 .. vertex_count-1, so a P1 field (elevation eta) is an
 // array of vertex_count values and a P2 field (velocity) an array of node_count() values whose
-// first vertex_count entries are the vertex values. Mid-edge nodes follow.
+// first vertex_count entries are the vertex values. Mid-edge nodes follow. Each group, and the
+// elements, run along a space-filling curve (mesh/curve_order.hpp), not in the file's order.
 //
 // Local numbering of an element (Gmsh's order for the 6-node triangle, counter-clockwise):
 //
@@ -82,8 +83,9 @@ struct RawMesh {
   std::vector<Line> lines;  // boundary line elements
 };
 
-/// Builds and validates the mesh: vertex-first renumbering, P2 mid nodes for 3-node triangles
-/// (edge midpoints), mid nodes shared between neighbours, adjacency, boundary groups, areas.
+/// Builds and validates the mesh: P2 mid nodes for 3-node triangles (edge midpoints), mid nodes
+/// shared between neighbours, adjacency, boundary groups, areas; numbered vertices first, nodes
+/// and elements along a space-filling curve (mesh/curve_order.hpp), whatever the input's order.
 /// Throws InputError naming the file and the element or node for: degenerate or inverted
 /// elements, nodes no element uses, non-manifold edges, 6-node neighbours disagreeing on a mid
 /// node, and boundary edges without a named group.

@@ -6,13 +6,15 @@
 //   4. collect edges: at most two triangles per edge (manifold), neighbours across each;
 //   5. mid nodes: shared by both triangles of an edge; taken from a 3-node boundary line (on the
 //      curve) or created at the straight midpoint when no element or line provides one;
-//   6. boundary edges: each must lie on a named physical line group.
+//   6. boundary edges: each must lie on a named physical line group;
+//   7. the final numbering: nodes and elements along a space-filling curve (curve_order.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "mesh/curve_order.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
@@ -198,7 +200,7 @@ Mesh build_mesh(const RawMesh& raw) {
   mesh.group_names = std::move(names);
 
   for (int t = 0; t < element_count; ++t) mesh.area[t] = 0.5 * mesh.jacobian(t).determinant();
-  return mesh;
+  return ordered_along_curve(mesh);
 }
 
 }  // namespace flotsam

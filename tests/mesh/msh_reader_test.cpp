@@ -69,7 +69,7 @@ TEST(MshReader, HandWrittenMsh22GivesItsNodesElementsAndGroups) {
   EXPECT_EQ(mesh.element_count(), 2);
   EXPECT_EQ(mesh.vertex_count, 4);
   EXPECT_EQ(mesh.node_count(), 4 + 5);  // vertices + edges
-  EXPECT_EQ(mesh.element_tags, (std::vector<long>{5, 6}));
+  EXPECT_THAT(mesh.element_tags, ::testing::UnorderedElementsAre(5, 6));
   EXPECT_EQ(mesh.group_names, (std::vector<std::string>{"bottom", "wall"}));
   const MeshSummary summary = summarize_mesh(mesh);
   EXPECT_DOUBLE_EQ(summary.total_area, 2.0);
@@ -77,8 +77,11 @@ TEST(MshReader, HandWrittenMsh22GivesItsNodesElementsAndGroups) {
   EXPECT_DOUBLE_EQ(summary.groups[0].length, 2.0);
   EXPECT_EQ(summary.groups[1].edge_count, 3);
   EXPECT_DOUBLE_EQ(summary.groups[1].length, 4.0);
-  for (int n = 0; n < 4; ++n) EXPECT_EQ(mesh.node_tags[n], n + 1);
-  EXPECT_EQ(mesh.nodes[2], Vec2(2, 1));
+  // Each vertex keeps its file tag (numbered along a curve: tags 1 4 3 2).
+  const Vec2 file_position[] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  for (int n = 0; n < 4; ++n) EXPECT_EQ(mesh.nodes[n], file_position[mesh.node_tags[n] - 1]);
+  EXPECT_EQ(std::vector<long>(mesh.node_tags.begin(), mesh.node_tags.begin() + 4),
+            (std::vector<long>{1, 4, 3, 2}));
 }
 
 TEST(MshReader, UnnamedPhysicalGroupIsNamedByItsNumber) {

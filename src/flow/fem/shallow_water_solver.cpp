@@ -115,7 +115,7 @@ void ShallowWaterSolver::setup_coupled_system() {
 }
 
 void ShallowWaterSolver::setup_system() {
-  colours_ = element_colours(mesh_);
+  blocks_ = element_blocks(mesh_);
   if (options_.advection == Advection::characteristics) characteristics_.emplace(mesh_);
   coupled_system_ready_ = false;
   segregated_.reset();
@@ -251,13 +251,16 @@ ElementState ShallowWaterSolver::element_state(int e, const Iteration& it) const
 // if-clause keeps the idle threads spinning, which on a loaded machine slowed small cases 10-20x.
 void ShallowWaterSolver::for_each_element(const std::function<void(int)>& visit) const {
   const size_t parallel_threshold = static_cast<size_t>(std::max(options_.parallel_min_colour, 1));
-  for (const auto& colour : colours_) {
+  for (size_t c = 0; c < blocks_.colours.size(); ++c) {
+    const auto& colour = blocks_.colours[c];
     const int count = static_cast<int>(colour.size());
-    if (colour.size() >= parallel_threshold) {
+    if (static_cast<size_t>(blocks_.element_count[c]) >= parallel_threshold) {
 #pragma omp parallel for schedule(static)
-      for (int idx = 0; idx < count; ++idx) visit(colour[idx]);
+      for (int b = 0; b < count; ++b)
+        for (int e = colour[b][0]; e < colour[b][1]; ++e) visit(e);
     } else {
-      for (int idx = 0; idx < count; ++idx) visit(colour[idx]);
+      for (int b = 0; b < count; ++b)
+        for (int e = colour[b][0]; e < colour[b][1]; ++e) visit(e);
     }
   }
 }

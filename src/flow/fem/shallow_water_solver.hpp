@@ -19,6 +19,7 @@
 #include "flow/fem/boundary_conditions.hpp"
 #include "flow/fem/characteristics.hpp"
 #include "flow/fem/element_assembly.hpp"
+#include "flow/fem/element_blocks.hpp"
 #include "flow/fem/linear_solver.hpp"
 #include "flow/fem/linear_system.hpp"
 #include "flow/fem/mass_matrix.hpp"
@@ -190,7 +191,7 @@ class ShallowWaterSolver {
   BoundaryConditions bc_;
   LinearSystem system_;
   LinearSolver solver_;
-  std::vector<std::vector<int>> colours_;
+  ElementBlocks blocks_;  // the order of for_each_element
   std::optional<Characteristics> characteristics_;
   std::optional<P2MassMatrix> mass_;            // with characteristics and the theta-scheme
   bool coupled_system_ready_ = false;           // system_ set up (coupled step, steady solve)

@@ -86,7 +86,8 @@ TEST(FlowInput, RainIsForTheFiniteVolumeEngineOnly) {
 }
 
 // The FEM cannot start dry: a formula leaving vertices below the dry depth is the same error as
-// a flat surface below the bed (the dam break's dry half).
+// a flat surface below the bed (the dam break's dry half). The message names the first dry node
+// in the mesh's numbering (along its curve, mesh/curve_order.hpp) by its tag.
 TEST(FlowInput, FormulaThatStartsDryNamesTheNode) {
   const Mesh mesh = make_rectangle_mesh({0, 0, 10, 4, 5, 2, true});
   Case c = wet_case();
@@ -96,7 +97,7 @@ TEST(FlowInput, FormulaThatStartsDryNamesTheNode) {
     s.initialize();
   });
   EXPECT_EQ(msg,
-            "basin.yaml: initial depth H = 0 m at node 4 (6, 0) of mesh rectangle 10x4 m, 5x2 "
+            "basin.yaml: initial depth H = 0 m at node 18 (10, 4) of mesh rectangle 10x4 m, 5x2 "
             "cells is below the dry depth 0.001 m: the FEM engine needs the domain wet at start "
             "(eta = 0 m, z_b = 0 m)");
 }
