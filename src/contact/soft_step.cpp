@@ -380,9 +380,18 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       if (movable_[i]) moving_.push_back(i), first_[k] |= i == src.a ? 1 : 2;
     }
   }
-  const int touched = static_cast<int>(touched_.size());
+  const int touched = static_cast<int>(touched_.size()), moving = static_cast<int>(moving_.size());
+  saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
+  saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
+  mid_velocity_.resize(slots), mid_spin_.resize(slots);
 #pragma omp parallel if (threads)
   {
+#pragma omp for schedule(static) nowait
+    for (int m = 0; m < moving; ++m) {
+      const int i = moving_[static_cast<std::size_t>(m)];
+      saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
+      saved_angle_[m] = bodies.angle[i], saved_spin_[m] = bodies.angular_velocity[i];
+    }
 #pragma omp for schedule(static)
     for (int m = 0; m < touched; ++m) {
       const int i = touched_[static_cast<std::size_t>(m)];
@@ -464,14 +473,6 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
         }
       }
     }
-  }
-  saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
-  saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
-  mid_velocity_.resize(slots), mid_spin_.resize(slots);
-  for (std::size_t m = 0; m < moving_.size(); ++m) {
-    const int i = moving_[m];
-    saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
-    saved_angle_[m] = bodies.angle[i], saved_spin_[m] = bodies.angular_velocity[i];
   }
 }
 
