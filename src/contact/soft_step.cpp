@@ -109,8 +109,10 @@ void apply(const SoftStep::Wide& c, const SoftStep::WidePoint& q, const Lanes& p
 // Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
 // impulses x >= 0 that bring the normal velocities vn to the targets, with w = K x + b >= 0 and
 // x_i w_i = 0, b = vn - target - K old; the four cases in turn. Gives old when none holds.
-void solve_block(const SoftStep::WideBlock& k, const Lanes vn[2], const Lanes target[2],
-                 const Lanes old[2], Lanes x[2]) {
+// Inlined so that it takes the instruction set of its caller's clone.
+[[gnu::always_inline]] inline void solve_block(const SoftStep::WideBlock& k, const Lanes vn[2],
+                                               const Lanes target[2], const Lanes old[2],
+                                               Lanes x[2]) {
   const Lanes b0 = (vn[0] - target[0]) - (k.k00 * old[0] + k.k01 * old[1]);
   const Lanes b1 = (vn[1] - target[1]) - (k.k10 * old[0] + k.k11 * old[1]);
   const Lanes zero{};
