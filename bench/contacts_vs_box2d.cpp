@@ -17,7 +17,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <memory>
 #include <string>
@@ -42,7 +44,24 @@ struct Result {
   double solve_ms = 0.0;         // flotsam: the solver per step [ms]
   double positions_ms = 0.0;     // flotsam: the position stage per step [ms]
   double sleeping = 0.0;         // flotsam: islands asleep per step (not solved)
+  std::uint64_t state_hash = 0;  // FNV-1a of the final poses' and velocities' bits
 };
+
+// FNV-1a over the bits of every body's pose and velocity: two builds, or two thread counts, that
+// print the same hash ended in the same state.
+std::uint64_t state_hash(const BodySet& b) {
+  std::uint64_t h = 14695981039346656037ull;
+  const auto add = [&](double x) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int k = 0; k < 8; ++k) h = (h ^ ((bits >> (8 * k)) & 0xff)) * 1099511628211ull;
+  };
+  for (int i = 0; i < b.size(); ++i) {
+    add(b.position[i].x()), add(b.position[i].y()), add(b.angle[i]);
+    add(b.velocity[i].x()), add(b.velocity[i].y()), add(b.angular_velocity[i]);
+  }
+  return h;
+}
 
 // Overlaps of the scene's poses, measured with flotsam's narrow phase (margin 0: touching only).
 Result measure(const JamScene& scene) {
@@ -98,6 +117,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
   }
   const double seconds = seconds_since(start), cpu = cpu_seconds() - cpu_start;
   Result r = measure(scene);
+  r.state_hash = state_hash(scene.bodies);
   r.ms_per_step = 1e3 * seconds / timed;
   r.cpu_ms_per_step = 1e3 * cpu / timed;
   r.sweeps = sweeps / timed;
@@ -222,10 +242,11 @@ int main(int argc, char** argv) {
       std::printf(
           "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f asleep, %.0f "
           "velocity sweeps per step, %.0f %% of steps solved twice; last solve per step: "
-          "detection %.2f ms, solver %.2f ms, positions %.2f ms)\n",
+          "detection %.2f ms, solver %.2f ms, positions %.2f ms; final state %016llx)\n",
           n, name, r.ms_per_step / b.ms_per_step, r.cpu_ms_per_step / b.cpu_ms_per_step,
           r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sleeping, r.sweeps,
-          100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms);
+          100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms,
+          static_cast<unsigned long long>(r.state_hash));
     }
     std::fflush(stdout);
   }

@@ -32,14 +32,17 @@ void Islands::group(std::vector<ContactConstraint>& contacts, int body_count) {
     ++start_[island + 1];
   }
   std::partial_sum(start_.begin(), start_.end(), start_.begin());
-  // Counting sort: stable, so each island keeps its contacts' order.
-  sorted_.resize(contacts.size());
-  std::vector<int>& next = island_of_root_;  // reused: next free slot of each island
-  next.assign(start_.begin(), start_.end() - 1);
-  for (std::size_t m = 0; m < contacts.size(); ++m) {
-    sorted_[next[island_of_contact_[m]]++] = contacts[m];
+  // Counting sort: stable, so each island keeps its contacts' order. Contacts already grouped
+  // (one island, as a packed jam) are not moved: a contact is a few hundred bytes.
+  if (!std::is_sorted(island_of_contact_.begin(), island_of_contact_.end())) {
+    sorted_.resize(contacts.size());
+    std::vector<int>& next = island_of_root_;  // reused: next free slot of each island
+    next.assign(start_.begin(), start_.end() - 1);
+    for (std::size_t m = 0; m < contacts.size(); ++m) {
+      sorted_[next[island_of_contact_[m]]++] = contacts[m];
+    }
+    contacts.swap(sorted_);
   }
-  contacts.swap(sorted_);
   largest_first_.resize(static_cast<std::size_t>(count()));
   std::iota(largest_first_.begin(), largest_first_.end(), 0);
   std::stable_sort(largest_first_.begin(), largest_first_.end(),

@@ -7,6 +7,11 @@
 #include "contact/restitution_energy.hpp"
 
 #include "core/constants.hpp"
+#include "core/vector_clones.hpp"
+
+// The lanes' helpers below take and return 32-byte vectors; they stay within this file, so the
+// calling convention GCC notes (AVX's differs from SSE2's) is never crossed.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace flotsam {
 namespace {
@@ -17,42 +22,269 @@ constexpr double max_hertz_per_rate = 0.25;  // f at most this fraction of the s
 // per colour, and a colour of a few hundred contacts is solved in microseconds.
 constexpr std::size_t parallel_contacts = 2000;
 
-// Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
-// impulses x >= 0 that bring the normal velocities vn to the targets, with w = K x + b >= 0 and
-// x_i w_i = 0, b = vn - target - K old; the four cases in turn. Returns old when none holds.
-Vec2 solve_block(const Mat2& K, const Mat2& mass, const Vec2& vn, const Vec2& target,
-                 const Vec2& old) {
-  const Vec2 b = vn - target - K * old;
-  Vec2 x = -(mass * b);
-  if (x.x() >= 0.0 && x.y() >= 0.0) return x;
-  x = Vec2(-b.x() / K(0, 0), 0.0);
-  if (x.x() >= 0.0 && K(1, 0) * x.x() + b.y() >= 0.0) return x;
-  x = Vec2(0.0, -b.y() / K(1, 1));
-  if (x.y() >= 0.0 && K(0, 1) * x.y() + b.x() >= 0.0) return x;
-  if (b.x() >= 0.0 && b.y() >= 0.0) return Vec2::Zero();
-  return old;
+using Lanes = SoftStep::Lanes;
+using Mask = SoftStep::Mask;
+constexpr int lanes = SoftStep::lanes;
+
+bool any(const Mask& m) {
+  for (int l = 0; l < lanes; ++l)
+    if (m[l]) return true;
+  return false;
+}
+// std::max, std::min of each lane, as the one-contact solve took them (same bits, -0 included).
+Lanes max(const Lanes& a, const Lanes& b) {
+  return a < b ? b : a;
+}
+Lanes min(const Lanes& a, const Lanes& b) {
+  return b < a ? b : a;
+}
+Lanes broadcast(double x) {
+  return Lanes{} + x;
 }
 
-Vec2 rotate(const Vec2& q, const Vec2& r) {  // R(Theta) r with q = (cos Theta, sin Theta)
-  return {q.x() * r.x() - q.y() * r.y(), q.y() * r.x() + q.x() * r.y()};
+struct Velocities {  // of the lanes' A or B bodies
+  Lanes x, y, w;     // u [m/s], omega [rad/s]
+};
+struct Poses {
+  Lanes sx, sy, qx, qy;  // D [m], (cos, sin) Theta
+};
+
+Velocities gather_velocities(const SoftStep::Body* body, const std::array<int, lanes>& slot) {
+  Velocities v;
+  for (int l = 0; l < lanes; ++l) {
+    const SoftStep::Body& b = body[slot[static_cast<std::size_t>(l)]];
+    v.x[l] = b.velocity.x(), v.y[l] = b.velocity.y(), v.w[l] = b.spin;
+  }
+  return v;
+}
+Poses gather_poses(const SoftStep::Body* body, const std::array<int, lanes>& slot) {
+  Poses p;
+  for (int l = 0; l < lanes; ++l) {
+    const SoftStep::Body& b = body[slot[static_cast<std::size_t>(l)]];
+    p.sx[l] = b.shift.x(), p.sy[l] = b.shift.y();
+    p.qx[l] = b.rotation.x(), p.qy[l] = b.rotation.y();
+  }
+  return p;
+}
+void scatter_velocities(SoftStep::Body* body, const std::array<int, lanes>& slot,
+                        const Mask& movable, const Velocities& v) {
+  for (int l = 0; l < lanes; ++l) {
+    if (!movable[l]) continue;
+    SoftStep::Body& b = body[slot[static_cast<std::size_t>(l)]];
+    b.velocity = {v.x[l], v.y[l]};
+    b.spin = v.w[l];
+  }
+}
+
+// The relative velocity at point q along (dx, dy):
+// [(u_A + omega_A k x r_A) - (u_B + omega_B k x r_B)] . d.
+Lanes relative(const Velocities& A, const Velocities& B, const SoftStep::WidePoint& q,
+               const Lanes& dx, const Lanes& dy) {
+  const Lanes x = ((A.x + A.w * (-q.r_ay)) - B.x) - B.w * (-q.r_by);
+  const Lanes y = ((A.y + A.w * q.r_ax) - B.y) - B.w * q.r_bx;
+  return x * dx + y * dy;
+}
+
+// (S-1): s = s_1 + n . [(D_A + R(Theta_A) r_A - r_A) - (D_B + R(Theta_B) r_B - r_B)].
+Lanes separation(const SoftStep::Wide& c, const SoftStep::WidePoint& q, const Poses& A,
+                 const Poses& B) {
+  const Lanes dx = A.sx - B.sx, dy = A.sy - B.sy;
+  const Lanes x = (dx + (A.qx * q.r_ax - A.qy * q.r_ay)) - (B.qx * q.r_bx - B.qy * q.r_by);
+  const Lanes y = (dy + (A.qy * q.r_ax + A.qx * q.r_ay)) - (B.qy * q.r_bx + B.qx * q.r_by);
+  return q.base_separation + (c.nx * x + c.ny * y);
+}
+
+// The impulse P at point q, in the lanes of m: u_A += P / m_A, omega_A += (r_A x P) / I_A, and
+// the opposite for B.
+void apply(const SoftStep::Wide& c, const SoftStep::WidePoint& q, const Lanes& px, const Lanes& py,
+           const Mask& m, Velocities& A, Velocities& B) {
+  const Lanes ax = A.x + c.inverse_mass_a * px, ay = A.y + c.inverse_mass_a * py;
+  const Lanes aw = A.w + c.inverse_inertia_a * (q.r_ax * py - q.r_ay * px);
+  const Lanes bx = B.x - c.inverse_mass_b * px, by = B.y - c.inverse_mass_b * py;
+  const Lanes bw = B.w - c.inverse_inertia_b * (q.r_bx * py - q.r_by * px);
+  A.x = m ? ax : A.x, A.y = m ? ay : A.y, A.w = m ? aw : A.w;
+  B.x = m ? bx : B.x, B.y = m ? by : B.y, B.w = m ? bw : B.w;
+}
+
+// Two points at once (Box2D v2.4's block solver, as in impulse_solver.cpp): the accumulated
+// impulses x >= 0 that bring the normal velocities vn to the targets, with w = K x + b >= 0 and
+// x_i w_i = 0, b = vn - target - K old; the four cases in turn. Gives old when none holds.
+// Inlined so that it takes the instruction set of its caller's clone.
+[[gnu::always_inline]] inline void solve_block(const SoftStep::WideBlock& k, const Lanes vn[2],
+                                               const Lanes target[2], const Lanes old[2],
+                                               Lanes x[2]) {
+  const Lanes b0 = (vn[0] - target[0]) - (k.k00 * old[0] + k.k01 * old[1]);
+  const Lanes b1 = (vn[1] - target[1]) - (k.k10 * old[0] + k.k11 * old[1]);
+  const Lanes zero{};
+  const Lanes both0 = -(k.m00 * b0 + k.m01 * b1), both1 = -(k.m10 * b0 + k.m11 * b1);
+  const Mask both = (both0 >= 0.0) & (both1 >= 0.0);
+  const Lanes first = -b0 / k.k00;
+  const Mask only_first = (first >= 0.0) & (k.k10 * first + b1 >= 0.0);
+  const Lanes second = -b1 / k.k11;
+  const Mask only_second = (second >= 0.0) & (k.k01 * second + b0 >= 0.0);
+  const Mask none = (b0 >= 0.0) & (b1 >= 0.0);
+  x[0] = both ? both0 : only_first ? first : only_second ? zero : none ? zero : old[0];
+  x[1] = both ? both1 : only_first ? zero : only_second ? second : none ? zero : old[1];
 }
 
 }  // namespace
 
-// Runs f(contact) over every contact, colour after colour; inside a parallel region, the
-// contacts of a colour are shared among the threads (none shares a movable body with another),
-// the overflow's taken by one thread. The threads meet once per colour.
+// The impulses a contact starts a sub-step from (sub-step 0: the first sub-step's of the last
+// interval, which took the forces' velocity of the whole interval; sub-step 1: the last
+// sub-step's; the later ones: the sub-step before). At a body's first contact in colour order,
+// the body takes this sub-step's share of the forces' velocity first.
+FLOTSAM_VECTOR_CLONES
+void soft_warm_start(const SoftStep::Wide& c, SoftStep::Body* body,
+                     const SoftStep::BodyStep* step) {
+  Velocities A = gather_velocities(body, c.a), B = gather_velocities(body, c.b);
+  for (int l = 0; l < lanes; ++l) {
+    const std::size_t i = static_cast<std::size_t>(l);
+    if (c.first_of_a[l]) {
+      const SoftStep::BodyStep& s = step[c.a[i]];
+      A.x[l] += s.gain.x(), A.y[l] += s.gain.y(), A.w[l] += s.spin_gain;
+    }
+    if (c.first_of_b[l]) {
+      const SoftStep::BodyStep& s = step[c.b[i]];
+      B.x[l] += s.gain.x(), B.y[l] += s.gain.y(), B.w[l] += s.spin_gain;
+    }
+  }
+  for (int p = 0; p < 2; ++p) {
+    const SoftStep::WidePoint& q = c.points[p];
+    // P = lambda_n n + lambda_t t, t = -k x n = (n_y, -n_x)
+    const Lanes px = q.normal_impulse * c.nx + q.tangent_impulse * c.ny;
+    const Lanes py = q.normal_impulse * c.ny + q.tangent_impulse * (-c.nx);
+    apply(c, q, px, py, c.point[p], A, B);
+  }
+  scatter_velocities(body, c.a, c.movable_a, A);
+  scatter_velocities(body, c.b, c.movable_b, B);
+}
+
+// One iteration over the points of the lanes' contacts: normal impulses (S-2), then friction.
+// The relax (no bias) takes a lane's two points at once when it has the block solver.
+FLOTSAM_VECTOR_CLONES
+void soft_solve(SoftStep::Wide& c, const SoftStep::WideBlock& k, SoftStep::Body* body, bool bias) {
+  Velocities A = gather_velocities(body, c.a), B = gather_velocities(body, c.b);
+  const Poses PA = gather_poses(body, c.a), PB = gather_poses(body, c.b);
+  const Mask block = bias ? Mask{} : c.block;
+  if (any(block)) {  // v_n to 0, or to -s/h_s at a gap
+    Lanes target[2], vn[2], old[2], x[2];
+    for (int p = 0; p < 2; ++p) {
+      const SoftStep::WidePoint& q = c.points[p];
+      const Lanes s = separation(c, q, PA, PB);
+      target[p] = s > 0.0 ? -s * c.inverse_substep : Lanes{};
+      vn[p] = relative(A, B, q, c.nx, c.ny);
+      old[p] = q.normal_impulse;
+    }
+    solve_block(k, vn, target, old, x);
+    for (int p = 0; p < 2; ++p) {
+      SoftStep::WidePoint& q = c.points[p];
+      const Lanes d = x[p] - old[p];
+      q.normal_impulse = block ? x[p] : q.normal_impulse;
+      q.largest_normal = block ? max(q.largest_normal, x[p]) : q.largest_normal;
+      apply(c, q, d * c.nx, d * c.ny, block, A, B);
+    }
+  }
+  const Lanes max_push = broadcast(max_push_speed), one = broadcast(1.0);
+  for (int p = 0; p < 2; ++p) {  // the other lanes' points one by one
+    SoftStep::WidePoint& q = c.points[p];
+    const Mask m = c.point[p] & ~block;
+    const Lanes s = separation(c, q, PA, PB);
+    const Mask gap = s > 0.0;
+    Lanes target{}, mass_scale = one, impulse_scale{};  // v* [m/s], [-], [-]
+    if (bias) {
+      target = min(-c.bias_rate * s, max_push);
+      mass_scale = c.mass_scale;
+      impulse_scale = c.impulse_scale;
+    }
+    target = gap ? -s * c.inverse_substep : target;  // the gap may close within the sub-step
+    mass_scale = gap ? one : mass_scale;
+    impulse_scale = gap ? Lanes{} : impulse_scale;
+    const Lanes vn = relative(A, B, q, c.nx, c.ny);  // [m/s]
+    const Lanes updated = max(q.normal_impulse - q.normal_mass * mass_scale * (vn - target) -
+                                  impulse_scale * q.normal_impulse,
+                              Lanes{});
+    const Lanes d = updated - q.normal_impulse;
+    q.normal_impulse = m ? updated : q.normal_impulse;
+    q.largest_normal = m ? max(q.largest_normal, updated) : q.largest_normal;
+    apply(c, q, d * c.nx, d * c.ny, m, A, B);
+  }
+  const Lanes tx = c.ny, ty = -c.nx;  // t = -k x n
+  for (int p = 0; p < 2; ++p) {
+    SoftStep::WidePoint& q = c.points[p];
+    const Lanes vt = relative(A, B, q, tx, ty);         // [m/s]
+    const Lanes bound = c.friction * q.normal_impulse;  // [N s]
+    const Lanes updated = min(max(q.tangent_impulse - q.tangent_mass * vt, -bound), bound);
+    const Lanes d = updated - q.tangent_impulse;
+    q.tangent_impulse = c.point[p] ? updated : q.tangent_impulse;
+    apply(c, q, d * tx, d * ty, c.point[p], A, B);
+  }
+  scatter_velocities(body, c.a, c.movable_a, A);
+  scatter_velocities(body, c.b, c.movable_b, B);
+}
+
+// Restitution (M-9) at the points struck in this interval: v_n -> -e v_n^0. Returns the
+// largest overlap of the lanes' points at the end of the interval (S-1) [m].
+FLOTSAM_VECTOR_CLONES
+double soft_restitute(SoftStep::Wide& c, const SoftStep::WideBlock& k,
+                      const std::array<SoftStep::WideStart, 2>& start, SoftStep::Body* body,
+                      double restitution, double threshold) {
+  Velocities A = gather_velocities(body, c.a), B = gather_velocities(body, c.b);
+  const Poses PA = gather_poses(body, c.a), PB = gather_poses(body, c.b);
+  Mask struck[2];
+  for (int p = 0; p < 2; ++p)
+    struck[p] = c.point[p] & ~start[p].resting & (start[p].approach < -threshold) &
+                (c.points[p].largest_normal > 0.0);
+  // Two points struck together are restituted at once (one after the other, the second would
+  // undo part of the first: a log meeting another end to end would leave spinning).
+  const Mask block = c.block & struck[0] & struck[1];
+  if (any(block)) {
+    Lanes target[2], vn[2], old[2], x[2];
+    for (int p = 0; p < 2; ++p) {
+      target[p] = -restitution * start[p].approach;  // v* = -e v_n^0 (M-9)
+      vn[p] = relative(A, B, c.points[p], c.nx, c.ny);
+      old[p] = c.points[p].total_normal;
+    }
+    solve_block(k, vn, target, old, x);
+    for (int p = 0; p < 2; ++p) {
+      SoftStep::WidePoint& q = c.points[p];
+      const Lanes d = x[p] - old[p];
+      q.total_normal = block ? x[p] : q.total_normal;
+      apply(c, q, d * c.nx, d * c.ny, block, A, B);
+    }
+  }
+  double worst = 0.0;  // [m]
+  for (int p = 0; p < 2; ++p) {
+    SoftStep::WidePoint& q = c.points[p];
+    const Lanes s = separation(c, q, PA, PB);
+    for (int l = 0; l < lanes; ++l)
+      if (c.point[p][l]) worst = std::max(worst, -s[l]);
+    const Mask m = struck[p] & ~block;
+    const Lanes vn = relative(A, B, q, c.nx, c.ny);  // [m/s]
+    const Lanes updated =
+        max(q.total_normal - q.normal_mass * (vn + restitution * start[p].approach), Lanes{});
+    const Lanes d = updated - q.total_normal;
+    q.total_normal = m ? updated : q.total_normal;
+    apply(c, q, d * c.nx, d * c.ny, m, A, B);
+  }
+  scatter_velocities(body, c.a, c.movable_a, A);
+  scatter_velocities(body, c.b, c.movable_b, B);
+  return worst;
+}
+
+// Runs f(w) over every Wide wide_[w], colour after colour; inside a parallel region, the Wides
+// of a colour are shared among the threads (none shares a movable body with another), the
+// overflow's taken by one thread. The threads meet once per colour.
 template <class F>
 void SoftStep::each_colour(F&& f) {
   for (int g = 0; g < colours_.groups(); ++g) {
-    const int begin = colours_.start(g), end = colours_.start(g + 1);
+    const int begin = wide_start_[g], end = wide_start_[g + 1];
     if (begin == end) continue;  // an empty overflow: no meeting of the threads
     if (colours_.is_overflow(g)) {
 #pragma omp single
-      for (int k = begin; k < end; ++k) f(soft_[static_cast<std::size_t>(k)]);
+      for (int w = begin; w < end; ++w) f(static_cast<std::size_t>(w));
     } else {
 #pragma omp for schedule(static)
-      for (int k = begin; k < end; ++k) f(soft_[static_cast<std::size_t>(k)]);
+      for (int w = begin; w < end; ++w) f(static_cast<std::size_t>(w));
     }
   }
 }
@@ -60,252 +292,225 @@ void SoftStep::each_colour(F&& f) {
 int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*islands*/,
                     BodySet& bodies, const SolverMasses& masses,
                     const std::vector<double>& intervals, const BodyVelocities& start) {
-  prepare(contacts, bodies, masses, intervals, start);
-  const int substeps = config_.substeps;
-  double largest = 0.0;  // [m] overlap at the end
   const bool threads = contacts.size() >= parallel_contacts && choice_.threads();
   const auto start_time = std::chrono::steady_clock::now();
+  prepare(contacts, bodies, masses, intervals, start, threads);
+  const int substeps = config_.substeps;
+  double largest = 0.0;  // [m] overlap at the end
+  Body* body = body_.data();
+  const BodyStep* step = body_step_.data();
 #pragma omp parallel if (threads)
   {
     for (int k = 0; k < substeps; ++k) {
-      each_colour([&](Contact& c) { warm_start(c); });
-      each_colour([&](Contact& c) { solve_contact(c, true); });
-      each_colour([&](Contact& c) {
-        if (c.first_of_a) move_pose(c.a);  // before any contact of the body reads its pose
-        if (c.first_of_b) move_pose(c.b);
-        solve_contact(c, false);
-        for (int p = 0; p < c.count; ++p) {  // this sub-step's impulses join the interval's
-          Point& q = c.points[static_cast<std::size_t>(p)];
-          q.total_normal += q.normal_impulse;
-          q.total_tangent += q.tangent_impulse;
-          if (k == 0) q.first = {q.normal_impulse, q.tangent_impulse};
-          // Sub-step 1 starts from the last interval's last sub-step.
-          if (k == 0 && substeps > 1)
-            q.normal_impulse = q.later.x(), q.tangent_impulse = q.later.y();
-        }
-      });
+      each_colour([&](std::size_t w) { soft_warm_start(wide_[w], body, step); });
+      each_colour([&](std::size_t w) { soft_solve(wide_[w], block_[w], body, true); });
+      each_colour([&](std::size_t w) { relax(w, k); });
     }
     double worst = 0.0;  // [m]
-    each_colour([&](Contact& c) {
-      for (const auto& [first, i] : {std::pair{c.first_of_a, c.a}, std::pair{c.first_of_b, c.b}})
-        if (first) mid_velocity_[i] = velocity_[i], mid_spin_[i] = spin_[i];  // before restitution
-      worst = std::max(worst, restitute(c));
+    each_colour([&](std::size_t w) {
+      const Wide& c = wide_[w];
+      for (int l = 0; l < lanes; ++l) {  // before restitution
+        const std::size_t i = static_cast<std::size_t>(l);
+        if (c.first_of_a[l])
+          mid_velocity_[c.a[i]] = body[c.a[i]].velocity, mid_spin_[c.a[i]] = body[c.a[i]].spin;
+        if (c.first_of_b[l])
+          mid_velocity_[c.b[i]] = body[c.b[i]].velocity, mid_spin_[c.b[i]] = body[c.b[i]].spin;
+      }
+      worst = std::max(worst, soft_restitute(wide_[w], block_[w], start_[w], body,
+                                             config_.restitution, config_.restitution_threshold));
     });
 #pragma omp critical
     largest = std::max(largest, worst);
   }
+  largest_overlap_ = largest;
+  bound_restitution();
+  store(contacts, bodies, threads);
   if (contacts.size() >= parallel_contacts)
     choice_.record(
         threads,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(),
         static_cast<double>(contacts.size()));
-  largest_overlap_ = largest;
-  bound_restitution();
-  store(contacts, bodies);
   return contacts.empty() ? 0 : 2 * substeps;
 }
 
-// Flat copies of the contacts in colour order, with their soft coefficients (S-2), and of the
-// bodies they touch, each put back where the interval started: D = -h u^0, Theta = -h omega^0.
+// Flat copies of the contacts in colour order, four to a Wide, with their soft coefficients
+// (S-2), and of the bodies they touch, each put back where the interval started: D = -h u^0,
+// Theta = -h omega^0.
 void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const BodySet& bodies,
                        const SolverMasses& masses, const std::vector<double>& intervals,
-                       const BodyVelocities& start) {
+                       const BodyVelocities& start, bool threads) {
   const int n = bodies.size(), wall = n;
   const auto slots = static_cast<std::size_t>(n + 1);
   movable_.assign(slots, 0);
   for (int i = 0; i < n; ++i)
     movable_[i] = masses.inverse_mass[i] > 0.0 || masses.inverse_inertia[i] > 0.0;
   colours_.assign(contacts, movable_);
-  velocity_.resize(slots), shift_.resize(slots), rotation_.resize(slots), gain_.resize(slots);
-  spin_gain_.resize(slots);
-  spin_.resize(slots), turn_.resize(slots), step_.resize(slots);
-  inverse_mass_.resize(slots), inverse_inertia_.resize(slots);
-  velocity_[wall] = shift_[wall] = gain_[wall] = Vec2::Zero();
-  spin_gain_[wall] = 0.0;
-  rotation_[wall] = Vec2::UnitX();
-  spin_[wall] = turn_[wall] = step_[wall] = inverse_mass_[wall] = inverse_inertia_[wall] = 0.0;
-  std::vector<char> seen(slots, 0);
-  moving_.clear();
-  auto add_body = [&](int i) {
-    if (seen[i]) return;
-    seen[i] = 1;
-    // Back to the pose the interval started from (x_1 = x_0 + h u^0), the velocity before the
-    // forces, and the forces' share of each sub-step.
-    const double h = intervals[i], m = config_.substeps;  // [s], [-]
-    gain_[i] = (bodies.velocity[i] - start.linear[i]) / m;
-    spin_gain_[i] = (bodies.angular_velocity[i] - start.angular[i]) / m;
-    velocity_[i] = start.linear[i];
-    spin_[i] = start.angular[i];
-    shift_[i] = -h * bodies.velocity[i];
-    turn_[i] = -h * bodies.angular_velocity[i];
-    rotation_[i] = {std::cos(turn_[i]), std::sin(turn_[i])};
-    step_[i] = h / config_.substeps;
-    inverse_mass_[i] = masses.inverse_mass[i];
-    inverse_inertia_[i] = masses.inverse_inertia[i];
-    if (movable_[i]) moving_.push_back(i);
-  };
   const std::vector<int>& order = colours_.order();
-  soft_.resize(order.size());
+  // Colour g's contacts fill its Wides lane after lane; the overflow's one to a Wide.
+  const int groups = colours_.groups();
+  wide_start_.assign(static_cast<std::size_t>(groups + 1), 0);
+  for (int g = 0; g < groups; ++g) {
+    const int count = colours_.start(g + 1) - colours_.start(g);
+    wide_start_[g + 1] =
+        wide_start_[g] + (colours_.is_overflow(g) ? count : (count + lanes - 1) / lanes);
+  }
+  const int wides = wide_start_.back();
+  lane_contact_.assign(static_cast<std::size_t>(lanes * wides), -1);
+  for (int g = 0; g < groups; ++g) {
+    const int step = colours_.is_overflow(g) ? lanes : 1;
+    for (int k = colours_.start(g); k < colours_.start(g + 1); ++k)
+      lane_contact_[static_cast<std::size_t>(lanes * wide_start_[g] +
+                                             step * (k - colours_.start(g)))] = k;
+  }
+  wide_.resize(static_cast<std::size_t>(wides)), block_.resize(static_cast<std::size_t>(wides));
+  start_.resize(static_cast<std::size_t>(wides));
+  body_.resize(slots), body_step_.resize(slots);
+  inverse_mass_.resize(slots), inverse_inertia_.resize(slots);
+  body_[wall] = Body{}, body_step_[wall] = BodyStep{};
+  inverse_mass_[wall] = inverse_inertia_[wall] = 0.0;
+  // The bodies in contact in the order of their first contact, and each movable body's first
+  // contact in colour order (bit 0: of A, bit 1: of B).
+  seen_.assign(slots, 0);
+  first_.assign(order.size(), 0);
+  touched_.clear(), moving_.clear();
   for (std::size_t k = 0; k < order.size(); ++k) {
     const ContactConstraint& src = contacts[static_cast<std::size_t>(order[k])];
-    Contact& c = soft_[k];
-    add_body(src.a);
-    if (src.b >= 0) add_body(src.b);
-    c.a = src.a;
-    c.b = src.b >= 0 ? src.b : wall;
-    c.count = src.point_count;
-    c.normal = src.normal;
-    c.friction = src.friction;
-    c.slop = src.slop;
-    c.use_block = src.use_block;
-    c.K = src.K;
-    c.block_mass = src.normal_mass;
-    const double h =
-        src.b >= 0 ? std::max(intervals[src.a], intervals[src.b]) : intervals[src.a];  // [s]
-    const double h_s = h / config_.substeps;                                           // [s]
-    if (h_s > 0.0) {
-      const double hertz = std::min(config_.contact_hertz, max_hertz_per_rate / h_s);  // [Hz]
-      const double omega = 2.0 * pi * hertz;                                           // [rad/s]
-      const double zeta = config_.damping_ratio;
-      const double a = h_s * omega * (2.0 * zeta + h_s * omega);  // [-]
-      c.inverse_substep = 1.0 / h_s;
-      c.bias_rate = omega / (2.0 * zeta + h_s * omega);
-      c.mass_scale = a / (1.0 + a);
-      c.impulse_scale = 1.0 / (1.0 + a);
-    } else {  // no time to move: a rigid velocity solve
-      c.inverse_substep = c.bias_rate = c.impulse_scale = 0.0;
-      c.mass_scale = 1.0;
-    }
-    for (int p = 0; p < c.count; ++p) {
-      const ContactPointConstraint& s = src.points[static_cast<std::size_t>(p)];
-      Point& q = c.points[static_cast<std::size_t>(p)];
-      q = Point{};
-      q.r_a = s.r_a;
-      q.r_b = s.r_b;
-      q.base_separation = s.separation - c.normal.dot(s.r_a - s.r_b);
-      q.normal_mass = s.normal_mass;
-      q.tangent_mass = s.tangent_mass;
-      q.approach = s.approach_velocity;
-      q.normal_impulse = s.first_impulse.x();  // for sub-step 0
-      q.tangent_impulse = s.first_impulse.y();
-      q.later = s.last_impulse;  // for sub-step 1
-      q.resting = s.resting;
+    for (const int i : {src.a, src.b}) {
+      if (i < 0 || seen_[i]) continue;
+      seen_[i] = 1;
+      touched_.push_back(i);
+      if (movable_[i]) moving_.push_back(i), first_[k] |= i == src.a ? 1 : 2;
     }
   }
-  // Each movable body's first contact in colour order.
-  std::fill(seen.begin(), seen.end(), 0);
-  for (Contact& c : soft_) {
-    c.first_of_a = movable_[c.a] && !seen[c.a];
-    c.first_of_b = movable_[c.b] && !seen[c.b];
-    seen[c.a] = seen[c.b] = 1;
-  }
+  const int touched = static_cast<int>(touched_.size()), moving = static_cast<int>(moving_.size());
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
   mid_velocity_.resize(slots), mid_spin_.resize(slots);
-  for (std::size_t m = 0; m < moving_.size(); ++m) {
-    const int i = moving_[m];
-    saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
-    saved_angle_[m] = bodies.angle[i], saved_spin_[m] = bodies.angular_velocity[i];
+#pragma omp parallel if (threads)
+  {
+#pragma omp for schedule(static) nowait
+    for (int m = 0; m < moving; ++m) {
+      const int i = moving_[static_cast<std::size_t>(m)];
+      saved_position_[m] = bodies.position[i], saved_velocity_[m] = bodies.velocity[i];
+      saved_angle_[m] = bodies.angle[i], saved_spin_[m] = bodies.angular_velocity[i];
+    }
+#pragma omp for schedule(static)
+    for (int m = 0; m < touched; ++m) {
+      const int i = touched_[static_cast<std::size_t>(m)];
+      // Back to the pose the interval started from (x_1 = x_0 + h u^0), the velocity before the
+      // forces, and the forces' share of each sub-step.
+      const double h = intervals[i], substeps = config_.substeps;  // [s], [-]
+      BodyStep& s = body_step_[i];
+      Body& b = body_[i];
+      s.gain = (bodies.velocity[i] - start.linear[i]) / substeps;
+      s.spin_gain = (bodies.angular_velocity[i] - start.angular[i]) / substeps;
+      b.velocity = start.linear[i];
+      b.spin = start.angular[i];
+      b.shift = -h * bodies.velocity[i];
+      s.turn = -h * bodies.angular_velocity[i];
+      b.rotation = {std::cos(s.turn), std::sin(s.turn)};
+      s.step = h / config_.substeps;
+      inverse_mass_[i] = masses.inverse_mass[i];
+      inverse_inertia_[i] = masses.inverse_inertia[i];
+    }
+#pragma omp for schedule(static)
+    for (int w = 0; w < wides; ++w) {
+      Wide& c = wide_[w];
+      WideBlock& block = block_[w];
+      std::array<WideStart, 2>& first = start_[w];
+      c = Wide{}, block = WideBlock{}, first = {};
+      for (int l = 0; l < lanes; ++l) {
+        const std::size_t lane = static_cast<std::size_t>(l);
+        const int k = lane_contact_[static_cast<std::size_t>(lanes * w + l)];
+        c.a[lane] = c.b[lane] = wall;  // an empty lane
+        if (k < 0) continue;
+        const ContactConstraint& src = contacts[static_cast<std::size_t>(order[k])];
+        const int a = src.a, b = src.b >= 0 ? src.b : wall;
+        c.a[lane] = a, c.b[lane] = b;
+        c.block[l] = src.use_block ? -1 : 0;
+        c.first_of_a[l] = first_[k] & 1 ? -1 : 0;
+        c.first_of_b[l] = first_[k] & 2 ? -1 : 0;
+        c.movable_a[l] = movable_[a] ? -1 : 0, c.movable_b[l] = movable_[b] ? -1 : 0;
+        c.nx[l] = src.normal.x(), c.ny[l] = src.normal.y();
+        c.friction[l] = src.friction;
+        c.inverse_mass_a[l] = masses.inverse_mass[a];
+        c.inverse_inertia_a[l] = masses.inverse_inertia[a];
+        c.inverse_mass_b[l] = src.b >= 0 ? masses.inverse_mass[b] : 0.0;
+        c.inverse_inertia_b[l] = src.b >= 0 ? masses.inverse_inertia[b] : 0.0;
+        block.k00[l] = src.K(0, 0), block.k01[l] = src.K(0, 1);
+        block.k10[l] = src.K(1, 0), block.k11[l] = src.K(1, 1);
+        block.m00[l] = src.normal_mass(0, 0), block.m01[l] = src.normal_mass(0, 1);
+        block.m10[l] = src.normal_mass(1, 0), block.m11[l] = src.normal_mass(1, 1);
+        const double h =
+            src.b >= 0 ? std::max(intervals[src.a], intervals[src.b]) : intervals[src.a];  // [s]
+        const double h_s = h / config_.substeps;                                           // [s]
+        if (h_s > 0.0) {
+          const double hertz = std::min(config_.contact_hertz, max_hertz_per_rate / h_s);  // [Hz]
+          const double omega = 2.0 * pi * hertz;  // [rad/s]
+          const double zeta = config_.damping_ratio;
+          const double a_s = h_s * omega * (2.0 * zeta + h_s * omega);  // a [-]
+          c.inverse_substep[l] = 1.0 / h_s;
+          c.bias_rate[l] = omega / (2.0 * zeta + h_s * omega);
+          c.mass_scale[l] = a_s / (1.0 + a_s);
+          c.impulse_scale[l] = 1.0 / (1.0 + a_s);
+        } else {  // no time to move: a rigid velocity solve
+          c.inverse_substep[l] = c.bias_rate[l] = c.impulse_scale[l] = 0.0;
+          c.mass_scale[l] = 1.0;
+        }
+        for (int p = 0; p < src.point_count; ++p) {
+          const ContactPointConstraint& s = src.points[static_cast<std::size_t>(p)];
+          WidePoint& q = c.points[p];
+          c.point[p][l] = -1;
+          q.r_ax[l] = s.r_a.x(), q.r_ay[l] = s.r_a.y();
+          q.r_bx[l] = s.r_b.x(), q.r_by[l] = s.r_b.y();
+          q.base_separation[l] = s.separation - src.normal.dot(s.r_a - s.r_b);
+          q.normal_mass[l] = s.normal_mass;
+          q.tangent_mass[l] = s.tangent_mass;
+          q.normal_impulse[l] = s.first_impulse.x();  // for sub-step 0
+          q.tangent_impulse[l] = s.first_impulse.y();
+          WideStart& f = first[static_cast<std::size_t>(p)];
+          f.later_normal[l] = s.last_impulse.x(), f.later_tangent[l] = s.last_impulse.y();
+          f.approach[l] = s.approach_velocity;
+          f.resting[l] = s.resting ? -1 : 0;
+        }
+      }
+    }
   }
-}
-
-// The impulses a contact starts a sub-step from (sub-step 0: the first sub-step's of the last
-// interval, which took the forces' velocity of the whole interval; sub-step 1: the last
-// sub-step's; the later ones: the sub-step before). At a body's first contact in colour order,
-// the body takes this sub-step's share of the forces' velocity first.
-void SoftStep::warm_start(Contact& c) {
-  Vec2 va = velocity_[c.a], vb = velocity_[c.b];
-  double wa = spin_[c.a], wb = spin_[c.b];
-  if (c.first_of_a) va += gain_[c.a], wa += spin_gain_[c.a];
-  if (c.first_of_b) vb += gain_[c.b], wb += spin_gain_[c.b];
-  const Vec2 tangent = -perp(c.normal);
-  for (int p = 0; p < c.count; ++p) {
-    const Point& q = c.points[static_cast<std::size_t>(p)];
-    const Vec2 P = q.normal_impulse * c.normal + q.tangent_impulse * tangent;
-    va += inverse_mass_[c.a] * P;
-    wa += inverse_inertia_[c.a] * cross(q.r_a, P);
-    vb -= inverse_mass_[c.b] * P;
-    wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
-  }
-  if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
-  if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
 }
 
 // Body i's pose moves by h_s u; (cos, sin) turned.
 void SoftStep::move_pose(int i) {
-  const double h = step_[i], turn = h * spin_[i];  // [s], [rad]
-  shift_[i] += h * velocity_[i];
-  turn_[i] += turn;
-  const Vec2 q = rotation_[i] + turn * perp(rotation_[i]);
-  rotation_[i] = q / q.norm();
+  Body& b = body_[i];
+  BodyStep& s = body_step_[i];
+  const double h = s.step, turn = h * b.spin;  // [s], [rad]
+  b.shift += h * b.velocity;
+  s.turn += turn;
+  const Vec2 q = b.rotation + turn * perp(b.rotation);
+  b.rotation = q / q.norm();
 }
 
-// One iteration over the points of a contact: normal impulses (S-2), then friction.
-void SoftStep::solve_contact(Contact& c, bool bias) {
-  Vec2 va = velocity_[c.a], vb = velocity_[c.b];
-  double wa = spin_[c.a], wb = spin_[c.b];
-  const double ima = inverse_mass_[c.a], imb = inverse_mass_[c.b];
-  const double iia = inverse_inertia_[c.a], iib = inverse_inertia_[c.b];
-  const Vec2 dp = shift_[c.a] - shift_[c.b];
-  const Vec2 qa = rotation_[c.a], qb = rotation_[c.b];
-  // The relax of two points at once: v_n to 0, or to -s/h_s at a gap.
-  const int single = !bias && c.use_block ? 0 : c.count;  // points solved one by one
-  if (single == 0) {
-    Point &p1 = c.points[0], &p2 = c.points[1];
-    Vec2 target, vn;
-    for (int p = 0; p < 2; ++p) {
-      const Point& q = c.points[static_cast<std::size_t>(p)];
-      const double s =
-          q.base_separation + c.normal.dot(dp + rotate(qa, q.r_a) - rotate(qb, q.r_b));  // (S-1)
-      target[p] = s > 0.0 ? -s * c.inverse_substep : 0.0;
-      vn[p] = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);
-    }
-    const Vec2 old(p1.normal_impulse, p2.normal_impulse);
-    const Vec2 x = solve_block(c.K, c.block_mass, vn, target, old);
-    for (int p = 0; p < 2; ++p) {
-      Point& q = c.points[static_cast<std::size_t>(p)];
-      const Vec2 P = (x[p] - old[p]) * c.normal;
-      q.normal_impulse = x[p];
-      q.largest_normal = std::max(q.largest_normal, x[p]);
-      va += ima * P, wa += iia * cross(q.r_a, P);
-      vb -= imb * P, wb -= iib * cross(q.r_b, P);
+// The relax iteration of sub-step `substep` at wide_[w], its bodies' poses moved first; its
+// impulses join the interval's.
+void SoftStep::relax(std::size_t w, int substep) {
+  Wide& c = wide_[w];
+  for (int l = 0; l < lanes; ++l) {  // before any contact of the body reads its pose
+    if (c.first_of_a[l]) move_pose(c.a[static_cast<std::size_t>(l)]);
+    if (c.first_of_b[l]) move_pose(c.b[static_cast<std::size_t>(l)]);
+  }
+  soft_solve(c, block_[w], body_.data(), false);
+  for (int p = 0; p < 2; ++p) {
+    WidePoint& q = c.points[p];
+    const Mask m = c.point[p];
+    q.total_normal = m ? q.total_normal + q.normal_impulse : q.total_normal;
+    q.total_tangent = m ? q.total_tangent + q.tangent_impulse : q.total_tangent;
+    if (substep == 0) {
+      WideStart& s = start_[w][static_cast<std::size_t>(p)];
+      s.first_normal = q.normal_impulse, s.first_tangent = q.tangent_impulse;
+      // Sub-step 1 starts from the last interval's last sub-step.
+      if (config_.substeps > 1)
+        q.normal_impulse = s.later_normal, q.tangent_impulse = s.later_tangent;
     }
   }
-  for (int p = 0; p < single; ++p) {
-    Point& q = c.points[static_cast<std::size_t>(p)];
-    const double s =
-        q.base_separation + c.normal.dot(dp + rotate(qa, q.r_a) - rotate(qb, q.r_b));  // (S-1)
-    double target = 0.0, mass_scale = 1.0, impulse_scale = 0.0;                        // v* [m/s]
-    if (s > 0.0) {
-      target = -s * c.inverse_substep;  // the gap may close within the sub-step
-    } else if (bias) {
-      target = std::min(-c.bias_rate * s, max_push_speed);
-      mass_scale = c.mass_scale;
-      impulse_scale = c.impulse_scale;
-    }
-    const double vn = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);  // [m/s]
-    const double updated = std::max(q.normal_impulse - q.normal_mass * mass_scale * (vn - target) -
-                                        impulse_scale * q.normal_impulse,
-                                    0.0);
-    const Vec2 P = (updated - q.normal_impulse) * c.normal;
-    q.normal_impulse = updated;
-    q.largest_normal = std::max(q.largest_normal, updated);
-    va += ima * P, wa += iia * cross(q.r_a, P);
-    vb -= imb * P, wb -= iib * cross(q.r_b, P);
-  }
-  const Vec2 tangent = -perp(c.normal);
-  for (int p = 0; p < c.count; ++p) {
-    Point& q = c.points[static_cast<std::size_t>(p)];
-    const double vt = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(tangent);  // [m/s]
-    const double bound = c.friction * q.normal_impulse;                              // [N s]
-    const double updated = std::clamp(q.tangent_impulse - q.tangent_mass * vt, -bound, bound);
-    const Vec2 P = (updated - q.tangent_impulse) * tangent;
-    q.tangent_impulse = updated;
-    va += ima * P, wa += iia * cross(q.r_a, P);
-    vb -= imb * P, wb -= iib * cross(q.r_b, P);
-  }
-  if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
-  if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
 }
 
 // Newton's law with friction may gain energy (restitution_energy.hpp): when the bodies end with
@@ -318,90 +523,56 @@ void SoftStep::bound_restitution() {
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
     const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
+    const Body& b = body_[i];
     before += solver_kinetic_energy(saved_velocity_[m], saved_spin_[m], w, w_i);
     mid += solver_kinetic_energy(mid_velocity_[i], mid_spin_[i], w, w_i);
-    end += solver_kinetic_energy(velocity_[i], spin_[i], w, w_i);
-    change.add(mid_velocity_[i], mid_spin_[i], velocity_[i], spin_[i], w, w_i);
+    end += solver_kinetic_energy(b.velocity, b.spin, w, w_i);
+    change.add(mid_velocity_[i], mid_spin_[i], b.velocity, b.spin, w, w_i);
   }
   if (end <= before * (1.0 + round_off)) return;
   const double s = change.fraction(before, mid, config_.restitution);  // [-]
   for (std::size_t m = 0; m < moving_.size(); ++m) {
     const int i = moving_[m];
-    velocity_[i] = mid_velocity_[i] + s * (velocity_[i] - mid_velocity_[i]);
-    spin_[i] = mid_spin_[i] + s * (spin_[i] - mid_spin_[i]);
+    Body& b = body_[i];
+    b.velocity = mid_velocity_[i] + s * (b.velocity - mid_velocity_[i]);
+    b.spin = mid_spin_[i] + s * (b.spin - mid_spin_[i]);
   }
-}
-
-// Restitution (M-9) at the points struck in this interval: v_n -> -e v_n^0. Returns the
-// largest overlap at the end of the interval (S-1) [m].
-double SoftStep::restitute(Contact& c) {
-  Vec2 va = velocity_[c.a], vb = velocity_[c.b];
-  double wa = spin_[c.a], wb = spin_[c.b];
-  const Vec2 dp = shift_[c.a] - shift_[c.b];
-  double worst = 0.0;  // [m]
-  auto struck = [&](const Point& q) {
-    return !q.resting && q.approach < -config_.restitution_threshold && q.largest_normal > 0.0;
-  };
-  // Two points struck together are restituted at once (one after the other, the second would
-  // undo part of the first: a log meeting another end to end would leave spinning).
-  const bool block = c.use_block && struck(c.points[0]) && struck(c.points[1]);
-  if (block) {
-    Vec2 target, vn, old;
-    for (int p = 0; p < 2; ++p) {
-      const Point& q = c.points[static_cast<std::size_t>(p)];
-      target[p] = -config_.restitution * q.approach;  // v* = -e v_n^0 (M-9)
-      vn[p] = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);
-      old[p] = q.total_normal;
-    }
-    const Vec2 x = solve_block(c.K, c.block_mass, vn, target, old);
-    for (int p = 0; p < 2; ++p) {
-      Point& q = c.points[static_cast<std::size_t>(p)];
-      const Vec2 P = (x[p] - old[p]) * c.normal;
-      q.total_normal = x[p];
-      va += inverse_mass_[c.a] * P, wa += inverse_inertia_[c.a] * cross(q.r_a, P);
-      vb -= inverse_mass_[c.b] * P, wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
-    }
-  }
-  for (int p = 0; p < c.count; ++p) {
-    Point& q = c.points[static_cast<std::size_t>(p)];
-    const double s = q.base_separation + c.normal.dot(dp + rotate(rotation_[c.a], q.r_a) -
-                                                      rotate(rotation_[c.b], q.r_b));
-    worst = std::max(worst, -s);
-    if (block || !struck(q)) continue;
-    const double vn = (va + wa * perp(q.r_a) - vb - wb * perp(q.r_b)).dot(c.normal);  // [m/s]
-    const double total =
-        std::max(q.total_normal - q.normal_mass * (vn + config_.restitution * q.approach), 0.0);
-    const Vec2 P = (total - q.total_normal) * c.normal;
-    q.total_normal = total;
-    va += inverse_mass_[c.a] * P, wa += inverse_inertia_[c.a] * cross(q.r_a, P);
-    vb -= inverse_mass_[c.b] * P, wb -= inverse_inertia_[c.b] * cross(q.r_b, P);
-  }
-  if (movable_[c.a]) velocity_[c.a] = va, spin_[c.a] = wa;
-  if (movable_[c.b]) velocity_[c.b] = vb, spin_[c.b] = wb;
-  return worst;
 }
 
 // The impulses go back to the contacts (warm start of the next interval, reports), the
 // velocities and the poses to the bodies: x = x_1 + D, theta = theta_1 + Theta.
-void SoftStep::store(std::vector<ContactConstraint>& contacts, BodySet& bodies) {
+void SoftStep::store(std::vector<ContactConstraint>& contacts, BodySet& bodies, bool threads) {
   const std::vector<int>& order = colours_.order();
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const Contact& c = soft_[k];
-    ContactConstraint& dst = contacts[static_cast<std::size_t>(order[k])];
-    for (int p = 0; p < c.count; ++p) {
-      const Point& q = c.points[static_cast<std::size_t>(p)];
-      ContactPointConstraint& d = dst.points[static_cast<std::size_t>(p)];
-      d.normal_impulse = q.total_normal;
-      d.tangent_impulse = q.total_tangent;
-      d.first_impulse = q.first;
-      d.last_impulse = {q.normal_impulse, q.tangent_impulse};
+  const int wides = static_cast<int>(wide_.size()), moving = static_cast<int>(moving_.size());
+#pragma omp parallel if (threads)
+  {
+#pragma omp for schedule(static) nowait
+    for (int w = 0; w < wides; ++w) {
+      const Wide& c = wide_[static_cast<std::size_t>(w)];
+      for (int l = 0; l < lanes; ++l) {
+        const int k = lane_contact_[static_cast<std::size_t>(lanes * w + l)];
+        if (k < 0) continue;
+        ContactConstraint& dst = contacts[static_cast<std::size_t>(order[k])];
+        for (int p = 0; p < dst.point_count; ++p) {
+          const WidePoint& q = c.points[p];
+          const WideStart& s = start_[static_cast<std::size_t>(w)][static_cast<std::size_t>(p)];
+          ContactPointConstraint& d = dst.points[static_cast<std::size_t>(p)];
+          d.normal_impulse = q.total_normal[l];
+          d.tangent_impulse = q.total_tangent[l];
+          d.first_impulse = {s.first_normal[l], s.first_tangent[l]};
+          d.last_impulse = {q.normal_impulse[l], q.tangent_impulse[l]};
+        }
+      }
     }
-  }
-  for (const int i : moving_) {
-    bodies.velocity[i] = velocity_[i];
-    bodies.angular_velocity[i] = spin_[i];
-    bodies.position[i] += shift_[i];
-    bodies.angle[i] += turn_[i];
+#pragma omp for schedule(static)
+    for (int m = 0; m < moving; ++m) {
+      const int i = moving_[static_cast<std::size_t>(m)];
+      const Body& b = body_[i];
+      bodies.velocity[i] = b.velocity;
+      bodies.angular_velocity[i] = b.spin;
+      bodies.position[i] += b.shift;
+      bodies.angle[i] += body_step_[i].turn;
+    }
   }
 }
 

@@ -34,6 +34,8 @@
 //
 // All contacts of the group are solved at once, colour by colour (contact_colours.hpp), the
 // colours' contacts in parallel: the same result on any number of threads.
+#include <cstdint>
+
 #include "contact/contact_colours.hpp"
 #include "contact/contact_solver.hpp"
 #include "contact/thread_choice.hpp"
@@ -58,41 +60,70 @@ class SoftStep final : public ContactSolver {
     return largest_overlap_;
   }
 
-  struct Point {
-    Vec2 r_a = Vec2::Zero(), r_b = Vec2::Zero();  // anchors from G_A, G_B at detection [m]
-    double base_separation = 0.0;  // s_1 - n . (r_A - r_B) [m], so that (S-1) is one dot
-    double normal_mass = 0.0, tangent_mass = 0.0;        // 1/K [kg]
-    double approach = 0.0;                               // v_n^0 [m/s]
-    double normal_impulse = 0.0, tangent_impulse = 0.0;  // lambda of this sub-step [N s]
-    double total_normal = 0.0, total_tangent = 0.0;      // over the interval [N s]
-    Vec2 first = Vec2::Zero();                           // (lambda_n, lambda_t) of sub-step 0 [N s]
-    Vec2 later = Vec2::Zero();    // of the last interval's last sub-step: sub-step 1 starts there
-    double largest_normal = 0.0;  // [N s] over the sub-steps
-    bool resting = false;
+  // The solver's loops read only the hot data: per body slot one cache line (Body), per four
+  // contacts of a colour one Wide (Box2D v3's wide constraints: one contact per lane, its
+  // bodies' inverse masses copied in), in flat arrays, a colour's Wides one after another. The
+  // lanes of a Wide share no movable body, so solving them at once gives the bits of solving
+  // them one after another; each lane does exactly the operations of the one-contact solve, in
+  // the same order (no contraction into FMA: CMakeLists.txt). The overflow's contacts take one
+  // Wide each, its other lanes empty. What the sweeps do not read lives in arrays of the same
+  // index (WideBlock, WideStart, BodyStep).
+  static constexpr int lanes = 4;
+  // Aligned to their size whatever the instruction set (without AVX, GCC would align them to 16).
+  using Lanes = double __attribute__((vector_size(lanes * sizeof(double)), aligned(32)));
+  using Mask = long long __attribute__((vector_size(lanes * sizeof(long long)), aligned(32)));
+  struct alignas(64) Body {
+    Vec2 velocity = Vec2::Zero();   // u [m/s]
+    double spin = 0.0;              // omega [rad/s]
+    Vec2 shift = Vec2::Zero();      // D [m] from the detected pose
+    Vec2 rotation = Vec2::UnitX();  // (cos, sin) Theta
   };
-  struct Contact {
-    int a = 0, b = 0;  // body slots; a wall is the slot after the last body
-    int count = 0;
-    Vec2 normal = Vec2::UnitX();
-    double friction = 0.0, slop = 0.0;                 // mu_c [-], [m]
-    double inverse_substep = 0.0;                      // 1 / h_s [1/s]
-    double bias_rate = 0.0;                            // b [1/s]
-    double mass_scale = 1.0, impulse_scale = 0.0;      // a/(1+a), 1/(1+a) [-]
-    bool use_block = false;                            // two points relaxed and restituted at once
-    bool first_of_a = false, first_of_b = false;       // the body's first contact in colour order
-    Mat2 K = Mat2::Zero(), block_mass = Mat2::Zero();  // [1/kg], K^-1 [kg]
-    std::array<Point, 2> points;
+  struct WidePoint {
+    Lanes r_ax, r_ay, r_bx, r_by;           // anchors from G_A, G_B at detection [m]
+    Lanes base_separation;                  // s_1 - n . (r_A - r_B) [m], so that (S-1) is one dot
+    Lanes normal_mass, tangent_mass;        // 1/K [kg]
+    Lanes normal_impulse, tangent_impulse;  // lambda of this sub-step [N s]
+    Lanes largest_normal;                   // [N s] over the sub-steps
+    Lanes total_normal, total_tangent;      // over the interval [N s]
+  };
+  struct alignas(64) Wide {
+    std::array<int, lanes> a, b;      // body slots; a wall (and an empty lane) is the last slot
+    Mask point[2];                    // the lane has point p
+    Mask block;                       // two points relaxed and restituted at once
+    Mask first_of_a, first_of_b;      // the body's first contact in colour order
+    Mask movable_a, movable_b;        // 1/m or 1/I > 0
+    Lanes nx, ny;                     // n
+    Lanes friction;                   // mu_c [-]
+    Lanes inverse_substep;            // 1 / h_s [1/s]
+    Lanes bias_rate;                  // b [1/s]
+    Lanes mass_scale, impulse_scale;  // a/(1+a), 1/(1+a) [-]
+    Lanes inverse_mass_a, inverse_mass_b;        // [1/kg]
+    Lanes inverse_inertia_a, inverse_inertia_b;  // [1/(kg m^2)]
+    WidePoint points[2];
+  };
+  struct alignas(64) WideBlock {  // the two-point block solver's K [1/kg] and K^-1 [kg], row by row
+    Lanes k00, k01, k10, k11, m00, m01, m10, m11;
+  };
+  struct alignas(32) WideStart {        // per point, read at the first sub-step and at the end
+    Lanes first_normal, first_tangent;  // lambda of sub-step 0 [N s]
+    Lanes later_normal, later_tangent;  // of the last interval's last sub-step [N s]
+    Lanes approach;                     // v_n^0 [m/s]
+    Mask resting;
+  };
+  struct BodyStep {            // per body slot, read once per sub-step
+    Vec2 gain = Vec2::Zero();  // the forces' velocity per sub-step [m/s]
+    double spin_gain = 0.0;    // [rad/s]
+    double turn = 0.0;         // Theta [rad]
+    double step = 0.0;         // h_s [s]
   };
 
  private:
   void prepare(const std::vector<ContactConstraint>& contacts, const BodySet& bodies,
                const SolverMasses& masses, const std::vector<double>& intervals,
-               const BodyVelocities& start);
-  void store(std::vector<ContactConstraint>& contacts, BodySet& bodies);
-  void solve_contact(Contact& c, bool bias);
-  void warm_start(Contact& c);
+               const BodyVelocities& start, bool threads);
+  void store(std::vector<ContactConstraint>& contacts, BodySet& bodies, bool threads);
+  void relax(std::size_t w, int substep);
   void move_pose(int body);
-  double restitute(Contact& c);
   void bound_restitution();
   template <class F>
   void each_colour(F&& f);
@@ -100,16 +131,19 @@ class SoftStep final : public ContactSolver {
   ContactConfig config_;
   ContactColours colours_;
   ThreadChoice choice_;  // whether the colours are shared among the threads (same bits either way)
-  std::vector<Contact> soft_;  // in colour order
-  std::vector<int> source_;    // soft_[k] is contacts[source_[k]]
-  // Per body slot (bodies.size() + 1, the last a wall): velocity, pose from the detected one.
-  std::vector<Vec2> velocity_, shift_, rotation_;  // u [m/s], D [m], (cos, sin) Theta
-  std::vector<double> spin_, turn_, step_;         // omega [rad/s], Theta [rad], h_s [s]
-  std::vector<Vec2> gain_;                         // the forces' velocity per sub-step [m/s]
-  std::vector<double> spin_gain_;                  // [rad/s]
+  std::vector<Wide> wide_;                       // colour after colour
+  std::vector<WideBlock> block_;                 // of wide_[w]
+  std::vector<std::array<WideStart, 2>> start_;  // of wide_[w]
+  std::vector<int> wide_start_;    // colour g's Wides: wide_start_[g] to wide_start_[g + 1] - 1
+  std::vector<int> lane_contact_;  // lane l of wide_[w]: contacts[lane_contact_[4 w + l]], or -1
+  // Per body slot (bodies.size() + 1, the last a wall).
+  std::vector<Body> body_;
+  std::vector<BodyStep> body_step_;
   std::vector<double> inverse_mass_, inverse_inertia_;
-  std::vector<char> movable_;
-  std::vector<int> moving_;  // movable bodies in contact
+  std::vector<char> movable_, seen_;
+  std::vector<unsigned char> first_;  // per contact in colour order: first of A (1), of B (2)
+  std::vector<int> touched_;          // bodies in contact, in colour order of their first contact
+  std::vector<int> moving_;           // the movable ones
   // What undo() puts back.
   std::vector<Vec2> saved_position_, saved_velocity_;
   std::vector<double> saved_angle_, saved_spin_;

@@ -42,6 +42,7 @@ class SweepAndPrune {
   long swaps_ = 0;
   // Sorted copies of the bounds, contiguous for the sweep.
   std::vector<double> lower_, upper_, other_lower_, other_upper_;
+  std::vector<std::vector<BodyPair>> runs_;  // each thread's pairs of its run of the sweep
 };
 
 /// Every overlapping pair (i < j) of active boxes by testing all pairs: O(N^2), the reference.

@@ -2,7 +2,10 @@
 // 10,000 random bodies in several configurations, and keeps doing so as the bodies move.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "contact/contact_world.hpp"
@@ -70,6 +73,30 @@ TEST(SweepAndPrune, SamePairsAsBruteForceOnTenThousandBodies) {
       for (int i = 0; i < bodies.size(); ++i) bodies.position[i].x() += 0.01 * (i % 7);
     }
   }
+}
+
+// The sweep runs in parallel from 2,000 boxes (sweep_and_prune.cpp): the pairs come out in the
+// same order on 1 and 2 threads (the contacts, and so the solve, follow that order).
+TEST(SweepAndPrune, SamePairsInTheSameOrderOnOneAndTwoThreads) {
+  const BodySet bodies = make_bodies({"dense", 300.0, false, false}, 10000, 11);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < bodies.size(); ++i) {
+    const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
+    const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y(),
+                      std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y());
+    boxes.push_back({bodies.position[i] - extent, bodies.position[i] + extent});
+  }
+  const std::vector<char> active(boxes.size(), 1);
+  std::vector<BodyPair> pairs[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    SweepAndPrune sweep;
+    sweep.find_pairs(boxes, active, pairs[threads - 1]);
+    omp_set_num_threads(before);
+  }
+  EXPECT_GT(pairs[0].size(), 10000u);
+  EXPECT_EQ(pairs[0], pairs[1]);  // the same pairs in the same order
 }
 
 TEST(SweepAndPrune, ExactlyTouchingNeighboursAreInContact) {
