@@ -65,18 +65,32 @@ void BodyIntegrator::advance_bodies(BodySet& bodies, const std::vector<int>& lis
     if (bodies.state[i] == BodyState::gone) continue;
     (options_.batch && !bodies.anchored[i] ? batched : single).push_back(i);
   }
+  // Threads from a few hundred bodies; below, no parallel region at all (one costs about a
+  // microsecond even on one thread, and a small contact group meets two every interval).
+  constexpr int parallel_bodies = 256;  // [-]
   long accepted = 0, rejected = 0;
   const int n = static_cast<int>(single.size());
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted, rejected) if (n >= 256)
-  for (int k = 0; k < n; ++k)
-    advance_body(bodies, single[k], flow, ta, tb, step_span, accepted, rejected);
+  auto advance_one = [&](int k, long& acc, long& rej) {
+    advance_body(bodies, single[k], flow, ta, tb, step_span, acc, rej);
+  };
+  if (n >= parallel_bodies) {
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted, rejected)
+    for (int k = 0; k < n; ++k) advance_one(k, accepted, rejected);
+  } else {
+    for (int k = 0; k < n; ++k) advance_one(k, accepted, rejected);
+  }
   const int m = static_cast<int>(batched.size());
   const int batches = (m + batch_width - 1) / batch_width;
-#pragma omp parallel for schedule(dynamic, 8) reduction(+ : accepted, rejected) if (m >= 256)
-  for (int b = 0; b < batches; ++b) {
+  auto advance_one_batch = [&](int b, long& acc, long& rej) {
     const int first = b * batch_width;
     advance_batch(bodies, batched.data() + first, std::min(batch_width, m - first), flow, ta, tb,
-                  step_span, model_, options_.min_step_fraction, accepted, rejected);
+                  step_span, model_, options_.min_step_fraction, acc, rej);
+  };
+  if (m >= parallel_bodies) {
+#pragma omp parallel for schedule(dynamic, 8) reduction(+ : accepted, rejected)
+    for (int b = 0; b < batches; ++b) advance_one_batch(b, accepted, rejected);
+  } else {
+    for (int b = 0; b < batches; ++b) advance_one_batch(b, accepted, rejected);
   }
   stats.accepted += accepted;
   stats.rejected += rejected;

@@ -71,21 +71,18 @@ ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coeffi
 void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double interval,
                         const std::vector<int>* members, const std::vector<double>* lengths) {
   assert(interval >= 0.0);  // a programming error, not bad input
+  select(bodies, members);
   if (lengths) {
     lengths_ = *lengths;
   } else {
-    lengths_.assign(static_cast<std::size_t>(bodies.size()), interval);
+    lengths_.resize(static_cast<std::size_t>(bodies.size()));
+    for (const int i : in_step_) lengths_[i] = interval;
   }
-  reach_.assign(static_cast<std::size_t>(bodies.size()), 0.0);
-  find_interval_start(bodies, members);
-  if (sleep_.enabled()) {
-    active_.assign(static_cast<std::size_t>(bodies.size()), members ? 0 : 1);
-    if (members)
-      for (const int i : *members) active_[i] = 1;
-    for (int i = 0; i < bodies.size(); ++i)
-      active_[i] = active_[i] && bodies.state[i] != BodyState::gone;
-    sleep_.check_forces(bodies, interval_start_, lengths_, active_);
-  }
+  reach_.resize(static_cast<std::size_t>(bodies.size()), 0.0);
+  for (const int i : grown_) reach_[i] = 0.0;  // the last step's
+  grown_.clear();
+  find_interval_start(bodies);
+  if (sleep_.enabled()) sleep_.check_forces(bodies, interval_start_, lengths_, active_);
   detect(bodies, walls, members);
   if (sleep_.wake_touched(contacts_, bodies)) {  // detected again with the woken bodies' poses
     contacts_ = previous_;
@@ -108,8 +105,7 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
   contacts_.insert(contacts_.end(), resting_.begin(), resting_.end());
   contacts_.insert(contacts_.end(), others_.begin(), others_.end());
   others_.clear();
-  for (int i = 0; i < bodies.size(); ++i) {
-    if (!active_[i]) continue;
+  for (const int i : in_step_) {
     after_.linear[i] = bodies.velocity[i];
     after_.angular[i] = bodies.angular_velocity[i];
     after_known_[i] = 1;
@@ -119,22 +115,45 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
 // The velocities the bodies of this step had at the start of the interval: those this world
 // left them with at the end of their last interval, when they were in it (the body step has
 // since added the forces' change); else the present ones (as if the forces acted at the start).
-void ContactWorld::find_interval_start(const BodySet& bodies, const std::vector<int>* members) {
+// Only the step's bodies' entries are written (the others are read by nobody).
+void ContactWorld::find_interval_start(const BodySet& bodies) {
   const auto n = static_cast<std::size_t>(bodies.size());
   after_.linear.resize(n, Vec2::Zero());
   after_.angular.resize(n, 0.0);
   after_known_.resize(n, 0);
-  interval_start_.linear = bodies.velocity;
-  interval_start_.angular = bodies.angular_velocity;
-  auto take = [&](int i) {
-    if (!after_known_[i]) return;
-    interval_start_.linear[i] = after_.linear[i];
-    interval_start_.angular[i] = after_.angular[i];
-  };
-  if (members) {
-    for (const int i : *members) take(i);
+  interval_start_.linear.resize(n);
+  interval_start_.angular.resize(n);
+  for (const int i : in_step_) {
+    interval_start_.linear[i] = after_known_[i] ? after_.linear[i] : bodies.velocity[i];
+    interval_start_.angular[i] = after_known_[i] ? after_.angular[i] : bodies.angular_velocity[i];
+  }
+}
+
+// The bodies of this step, in_step_ (ascending), and their flags active_: the members that are
+// not gone, or every body that is not. The flags of the last step's bodies are cleared, so a
+// small group's step costs its own size, not the body count.
+void ContactWorld::select(const BodySet& bodies, const std::vector<int>* members) {
+  const auto n = static_cast<std::size_t>(bodies.size());
+  if (active_.size() != n) {
+    active_.assign(n, 0);
   } else {
-    for (int i = 0; i < bodies.size(); ++i) take(i);
+    for (const int i : in_step_) active_[i] = 0;
+  }
+  in_step_.clear();
+  if (members) {
+    for (const int i : *members) {
+      if (bodies.state[i] == BodyState::gone || active_[i]) continue;
+      active_[i] = 1;
+      in_step_.push_back(i);
+    }
+    if (!std::is_sorted(in_step_.begin(), in_step_.end()))
+      std::sort(in_step_.begin(), in_step_.end());
+  } else {
+    for (int i = 0; i < bodies.size(); ++i) {
+      if (bodies.state[i] == BodyState::gone) continue;
+      active_[i] = 1;
+      in_step_.push_back(i);
+    }
   }
 }
 
@@ -142,14 +161,13 @@ void ContactWorld::find_interval_start(const BodySet& bodies, const std::vector<
 // more than its detection margin; true when some body's is.
 bool ContactWorld::grow_reach(const BodySet& bodies) {
   bool grown = false;
-  for (int i = 0; i < bodies.size(); ++i) {
-    if (bodies.state[i] == BodyState::gone) continue;
+  for (const int i : in_step_) {  // the others' velocities did not change
     const double R = 0.5 * std::hypot(bodies.length[i], bodies.width[i]);  // [m]
     const double moved =
         lengths_[i] * ((bodies.velocity[i] - velocity_before_[i]).norm() +
                        std::abs(bodies.angular_velocity[i] - angular_velocity_before_[i]) * R);
     if (moved > margin_ * config_.allowed_overlap * bodies.width[i])
-      reach_[i] = moved, grown = true;
+      reach_[i] = moved, grown = true, grown_.push_back(i);
   }
   return grown;
 }
@@ -172,7 +190,8 @@ ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments
 void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls,
                           const std::vector<int>* members) {
   Stopwatch clock;
-  update_boxes(bodies, members);
+  select(bodies, members);
+  update_boxes(bodies);
   profile_.boxes = clock.lap();
   find_pairs(walls);
   profile_.broad_phase = clock.lap();
@@ -183,16 +202,11 @@ void ContactWorld::detect(const BodySet& bodies, const BoundarySegments& walls,
 // Each box is the body's footprint grown by its contact margin 2 * allowed_overlap * l (and its
 // reach, see step()), so that every pair the narrow phase would keep (gap <= margin) is a
 // candidate.
-void ContactWorld::update_boxes(const BodySet& bodies, const std::vector<int>* members) {
+void ContactWorld::update_boxes(const BodySet& bodies) {
   const int n = bodies.size();
   reach_.resize(static_cast<std::size_t>(n), 0.0);  // zero unless step() grew it
   boxes_.resize(static_cast<std::size_t>(n));
-  active_.assign(static_cast<std::size_t>(n), members ? 0 : 1);
-  if (members)
-    for (const int i : *members) active_[i] = 1;
-  for (int i = 0; i < n; ++i) {
-    active_[i] = active_[i] && bodies.state[i] != BodyState::gone;
-    if (!active_[i]) continue;
+  for (const int i : in_step_) {
     const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
     const double grow = margin_ * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
@@ -203,13 +217,12 @@ void ContactWorld::update_boxes(const BodySet& bodies, const std::vector<int>* m
 
 void ContactWorld::find_pairs(const BoundarySegments& walls) {
   if (broad_phase_ == BroadPhase::sweep_and_prune) {
-    sweep_.find_pairs(boxes_, active_, body_pairs_);
+    sweep_.find_pairs(boxes_, active_, in_step_, body_pairs_);
   } else {
     brute_force_pairs(boxes_, active_, body_pairs_);
   }
   wall_pairs_.clear();
-  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i) {
-    if (!active_[i]) continue;
+  for (const int i : in_step_) {
     if (broad_phase_ == BroadPhase::sweep_and_prune) {
       walls.query(boxes_[i], found_, stamp_, stamp_value_);
     } else {
@@ -244,14 +257,12 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
   // contacts on any number of threads. Each footprint is built once (one cos, sin per body).
   rectangles_.resize(boxes_.size());
-  for (int i = 0; i < static_cast<int>(boxes_.size()); ++i)
-    if (active_[i]) rectangles_[i] = body_rectangle(bodies, i);
+  for (const int i : in_step_) rectangles_[i] = body_rectangle(bodies, i);
   constexpr std::size_t parallel_pairs = 2000;  // [-] threads pay off from a few thousand
   const int body_pairs = static_cast<int>(body_pairs_.size());
   const int wall_pairs = static_cast<int>(wall_pairs_.size());
   manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
-#pragma omp parallel for schedule(static) if (manifolds_.size() >= parallel_pairs)
-  for (int k = 0; k < body_pairs + wall_pairs; ++k) {
+  auto collide_pair = [&](int k) {
     if (k < body_pairs) {
       const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
       const double slop = config_.allowed_overlap * std::min(bodies.width[i], bodies.width[j]);
@@ -264,6 +275,13 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
           collide_rectangle_segment(rectangles_[i], walls.start[s], walls.end[s], walls.normal[s],
                                     margin_ * slop + reach_[i], 0.1 * slop);
     }
+  };
+  const int pairs = body_pairs + wall_pairs;
+  if (manifolds_.size() >= parallel_pairs) {
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < pairs; ++k) collide_pair(k);
+  } else {  // no parallel region: it costs about a microsecond even on one thread
+    for (int k = 0; k < pairs; ++k) collide_pair(k);
   }
   for (int k = 0; k < body_pairs; ++k) {
     const Manifold& m = manifolds_[static_cast<std::size_t>(k)];
@@ -303,13 +321,12 @@ void ContactWorld::match_previous_points() {
   // Each contact looks up its own: in parallel, the same on any number of threads.
   int points = 0, warm_started = 0;
   const int count = static_cast<int>(contacts_.size());
-#pragma omp parallel for schedule(static) reduction(+ : points, warm_started) if (count >= 2000)
-  for (int m = 0; m < count; ++m) {
+  auto warm_start = [&](int m) {  // the points of contact m warm-started
     ContactConstraint& c = contacts_[static_cast<std::size_t>(m)];
-    points += c.point_count;
+    int warm = 0;
     const auto found = std::lower_bound(previous_keys_.begin(), previous_keys_.end(), key(c),
                                         [](const auto& x, const Key& k) { return x.first < k; });
-    if (found == previous_keys_.end() || found->first != key(c)) continue;
+    if (found == previous_keys_.end() || found->first != key(c)) return 0;
     const ContactConstraint* it = &previous_[static_cast<std::size_t>(found->second)];
     std::array<bool, 2> used{false, false};
     std::array<int, 2> match{-1, -1};
@@ -339,7 +356,20 @@ void ContactWorld::match_previous_points() {
       p.first_impulse = old.first_impulse;
       p.last_impulse = old.last_impulse;
       p.resting = old.normal_impulse > 0.0;
-      ++warm_started;
+      ++warm;
+    }
+    return warm;
+  };
+  if (count >= 2000) {
+#pragma omp parallel for schedule(static) reduction(+ : points, warm_started)
+    for (int m = 0; m < count; ++m) {
+      points += contacts_[static_cast<std::size_t>(m)].point_count;
+      warm_started += warm_start(m);
+    }
+  } else {
+    for (int m = 0; m < count; ++m) {
+      points += contacts_[static_cast<std::size_t>(m)].point_count;
+      warm_started += warm_start(m);
     }
   }
   profile_.points = points;
@@ -349,7 +379,7 @@ void ContactWorld::match_previous_points() {
 // The solver (contact_solver.hpp) changes the velocities and moves the poses over the interval.
 void ContactWorld::solve(BodySet& bodies) {
   Stopwatch clock;
-  masses_ = make_solver_masses(bodies, config_, added_mass_coefficient_);
+  set_solver_masses(masses_, bodies, config_, added_mass_coefficient_, in_step_);
   match_previous_points();
   islands_.group(contacts_, bodies.size());
   profile_.sleeping_islands = sleep_.set_aside(contacts_, islands_, resting_, bodies);
@@ -358,8 +388,12 @@ void ContactWorld::solve(BodySet& bodies) {
   prepare_contacts(contacts_, bodies, masses_, config_, lengths_);
   profile_.islands = islands_.count();
   profile_.largest_island = islands_.largest();
-  velocity_before_ = bodies.velocity;
-  angular_velocity_before_ = bodies.angular_velocity;
+  velocity_before_.resize(bodies.velocity.size());
+  angular_velocity_before_.resize(bodies.angular_velocity.size());
+  for (const int i : in_step_) {  // for grow_reach()
+    velocity_before_[i] = bodies.velocity[i];
+    angular_velocity_before_[i] = bodies.angular_velocity[i];
+  }
   profile_.velocity_sweeps =
       solver_->solve(contacts_, islands_, bodies, masses_, lengths_, interval_start_);
   profile_.solve = clock.lap();

@@ -95,9 +95,10 @@ class ContactWorld {
   const ContactConfig& config() const { return config_; }
 
  private:
-  void update_boxes(const BodySet& bodies, const std::vector<int>* members);
+  void select(const BodySet& bodies, const std::vector<int>* members);
+  void update_boxes(const BodySet& bodies);
   void find_pairs(const BoundarySegments& walls);
-  void find_interval_start(const BodySet& bodies, const std::vector<int>* members);
+  void find_interval_start(const BodySet& bodies);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
   void match_previous_points();
   void solve(BodySet& bodies);
@@ -111,7 +112,8 @@ class ContactWorld {
   std::vector<Aabb> boxes_;
   std::vector<Rectangle> rectangles_;  // footprints of this detection
   std::vector<Manifold> manifolds_;    // of the body pairs, then of the wall pairs
-  std::vector<char> active_;
+  std::vector<char> active_;           // 1 for the bodies of this step (in_step_)
+  std::vector<int> in_step_;           // this step's bodies, ascending (select())
   std::vector<BodyPair> body_pairs_;
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
@@ -130,6 +132,7 @@ class ContactWorld {
   std::vector<char> after_known_;  // 1 while after_ holds the start of the body's next interval
   BodyVelocities interval_start_;  // this step's bodies at the start of their interval
   std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
+  std::vector<int> grown_;         // the bodies whose reach_ the last step grew
   std::vector<double> lengths_;    // h per body [s]
   std::vector<int> found_, stamp_;
   int stamp_value_ = 0;

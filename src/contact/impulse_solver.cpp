@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "contact/restitution_energy.hpp"
 
@@ -111,10 +112,19 @@ Frame body_frame(const BodySet& bodies, int i) {
 SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
                                 double added_mass_coefficient) {
   SolverMasses m;
-  const int n = bodies.size();
-  m.inverse_mass.assign(static_cast<std::size_t>(n), 0.0);
-  m.inverse_inertia.assign(static_cast<std::size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i) {
+  std::vector<int> all(static_cast<std::size_t>(bodies.size()));
+  std::iota(all.begin(), all.end(), 0);
+  set_solver_masses(m, bodies, config, added_mass_coefficient, all);
+  return m;
+}
+
+void set_solver_masses(SolverMasses& m, const BodySet& bodies, const ContactConfig& config,
+                       double added_mass_coefficient, std::span<const int> listed) {
+  const auto n = static_cast<std::size_t>(bodies.size());
+  m.inverse_mass.resize(n, 0.0);
+  m.inverse_inertia.resize(n, 0.0);
+  for (const int i : listed) {
+    m.inverse_mass[i] = m.inverse_inertia[i] = 0.0;
     if (bodies.state[i] == BodyState::gone || bodies.anchored[i]) continue;  // immovable: 1/m = 0
     // A floating body displaces its own mass (m_f = m_p, spec 2): added mass C_a m_p (M-5).
     const bool add = config.added_mass_in_contact && bodies.state[i] == BodyState::floating;
@@ -122,7 +132,6 @@ SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& conf
     m.inverse_mass[i] = 1.0 / (factor * bodies.mass[i]);
     m.inverse_inertia[i] = 1.0 / (factor * bodies.inertia[i]);
   }
-  return m;
 }
 
 void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
@@ -130,8 +139,7 @@ void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodi
                       const std::vector<double>& intervals) {
   // Each contact on its own: in parallel, the same on any number of threads.
   const auto count = static_cast<std::ptrdiff_t>(contacts.size());
-#pragma omp parallel for schedule(static) if (count >= 2000)
-  for (std::ptrdiff_t m = 0; m < count; ++m) {
+  auto prepare = [&](std::ptrdiff_t m) {
     ContactConstraint& c = contacts[static_cast<std::size_t>(m)];
     const double interval = c.b >= 0 ? std::max(intervals[c.a], intervals[c.b]) : intervals[c.a];
     const Vec2 tangent = -perp(c.normal);
@@ -165,6 +173,12 @@ void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodi
         c.normal_mass = c.K.inverse();
       }
     }
+  };
+  if (count >= 2000) {
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t m = 0; m < count; ++m) prepare(m);
+  } else {  // no parallel region: it costs about a microsecond even on one thread
+    for (std::ptrdiff_t m = 0; m < count; ++m) prepare(m);
   }
 }
 

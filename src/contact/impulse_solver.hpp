@@ -87,6 +87,11 @@ struct SolverMasses {
 SolverMasses make_solver_masses(const BodySet& bodies, const ContactConfig& config,
                                 double added_mass_coefficient);
 
+/// The same for the `listed` bodies only, in `masses` sized to the body count (entries of bodies
+/// not listed are left as they were, zero when new): a contact group's step costs its own size.
+void set_solver_masses(SolverMasses& masses, const BodySet& bodies, const ContactConfig& config,
+                       double added_mass_coefficient, std::span<const int> listed);
+
 /// Fills the effective masses, approach and target velocities of every point; `intervals[i]` h
 /// [s] is the time over which the solved velocities will move body i (speculative target: the
 /// longer of the two bodies').

@@ -14,15 +14,19 @@ int Islands::root(int body) {
 }
 
 void Islands::group(std::vector<ContactConstraint>& contacts, int body_count) {
+  // Only the bodies of the contacts are touched: a small group's step costs its own size.
   parent_.resize(static_cast<std::size_t>(body_count));
-  std::iota(parent_.begin(), parent_.end(), 0);
+  island_of_root_.resize(static_cast<std::size_t>(body_count));
+  for (const ContactConstraint& c : contacts) {
+    parent_[c.a] = c.a, island_of_root_[c.a] = -1;
+    if (c.b >= 0) parent_[c.b] = c.b, island_of_root_[c.b] = -1;
+  }
   for (const ContactConstraint& c : contacts) {
     if (c.b < 0) continue;  // a wall joins nothing
     const int ra = root(c.a), rb = root(c.b);
     if (ra != rb) parent_[std::max(ra, rb)] = std::min(ra, rb);
   }
   // Number the islands in the order of their first contact; count their contacts.
-  island_of_root_.assign(static_cast<std::size_t>(body_count), -1);
   island_of_contact_.resize(contacts.size());
   start_.assign(1, 0);
   for (std::size_t m = 0; m < contacts.size(); ++m) {
@@ -36,10 +40,9 @@ void Islands::group(std::vector<ContactConstraint>& contacts, int body_count) {
   // (one island, as a packed jam) are not moved: a contact is a few hundred bytes.
   if (!std::is_sorted(island_of_contact_.begin(), island_of_contact_.end())) {
     sorted_.resize(contacts.size());
-    std::vector<int>& next = island_of_root_;  // reused: next free slot of each island
-    next.assign(start_.begin(), start_.end() - 1);
+    next_.assign(start_.begin(), start_.end() - 1);  // next free slot of each island
     for (std::size_t m = 0; m < contacts.size(); ++m) {
-      sorted_[next[island_of_contact_[m]]++] = contacts[m];
+      sorted_[next_[island_of_contact_[m]]++] = contacts[m];
     }
     contacts.swap(sorted_);
   }

@@ -32,7 +32,7 @@ class Islands {
   int root(int body);
 
   std::vector<int> parent_;  // union-find over bodies
-  std::vector<int> island_of_root_, island_of_contact_, start_, largest_first_;
+  std::vector<int> island_of_root_, island_of_contact_, start_, next_, largest_first_;
   std::vector<ContactConstraint> sorted_;
 };
 

@@ -24,19 +24,37 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
                               BodySet& bodies, const SolverMasses& masses,
                               const std::vector<double>& intervals,
                               const BodyVelocities& /*start*/) {
-  velocity_before_ = bodies.velocity;
-  angular_velocity_before_ = bodies.angular_velocity;
-  intervals_ = intervals;
+  // The bodies of the contacts: the only ones whose velocities the solve changes.
+  const auto n = static_cast<std::size_t>(bodies.size());
+  touched_.resize(n, 0);
+  for (const int i : moved_) touched_[i] = 0;
+  moved_.clear();
+  for (const ContactConstraint& c : contacts) {
+    for (const int i : {c.a, c.b}) {
+      if (i < 0 || touched_[i]) continue;
+      touched_[i] = 1;
+      moved_.push_back(i);
+    }
+  }
+  velocity_before_.resize(n), angular_velocity_before_.resize(n), intervals_.resize(n);
+  for (const int i : moved_) {
+    velocity_before_[i] = bodies.velocity[i];
+    angular_velocity_before_[i] = bodies.angular_velocity[i];
+    intervals_[i] = intervals[i];
+  }
   const std::vector<int>& order = islands.largest_first();
   const int count = islands.count();
+  auto solve_island = [&](int k) {
+    return solve_contact_island(islands.island(contacts, order[k]), bodies, masses, config_);
+  };
   int sweeps = 0;
-#pragma omp parallel for schedule(dynamic) reduction(max \
-                                                     : sweeps) if (in_parallel(contacts, islands))
-  for (int k = 0; k < count; ++k) {
-    const std::span<ContactConstraint> island = islands.island(contacts, order[k]);
-    sweeps = std::max(sweeps, solve_contact_island(island, bodies, masses, config_));
+  if (in_parallel(contacts, islands)) {
+#pragma omp parallel for schedule(dynamic) reduction(max : sweeps)
+    for (int k = 0; k < count; ++k) sweeps = std::max(sweeps, solve_island(k));
+  } else {  // no parallel region: it costs about a microsecond even on one thread
+    for (int k = 0; k < count; ++k) sweeps = std::max(sweeps, solve_island(k));
   }
-  for (int i = 0; i < bodies.size(); ++i) {
+  for (const int i : moved_) {
     bodies.position[i] += intervals[i] * (bodies.velocity[i] - velocity_before_[i]);
     bodies.angle[i] += intervals[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
   }
@@ -44,7 +62,7 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
 }
 
 void SequentialImpulses::undo(BodySet& bodies) {
-  for (int i = 0; i < bodies.size(); ++i) {
+  for (const int i : moved_) {
     bodies.position[i] -= intervals_[i] * (bodies.velocity[i] - velocity_before_[i]);
     bodies.angle[i] -= intervals_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
     bodies.velocity[i] = velocity_before_[i];
@@ -58,12 +76,15 @@ double SequentialImpulses::correct_positions(std::vector<ContactConstraint>& con
                                              const SolverMasses& masses) {
   const std::vector<int>& order = islands.largest_first();
   const int count = islands.count();
+  auto correct_island = [&](int k) {
+    return correct_contact_positions(islands.island(contacts, order[k]), bodies, masses, config_);
+  };
   double worst = 0.0;  // [m]
-#pragma omp parallel for schedule(dynamic) reduction(max \
-                                                     : worst) if (in_parallel(contacts, islands))
-  for (int k = 0; k < count; ++k) {
-    worst = std::max(worst, correct_contact_positions(islands.island(contacts, order[k]), bodies,
-                                                      masses, config_));
+  if (in_parallel(contacts, islands)) {
+#pragma omp parallel for schedule(dynamic) reduction(max : worst)
+    for (int k = 0; k < count; ++k) worst = std::max(worst, correct_island(k));
+  } else {
+    for (int k = 0; k < count; ++k) worst = std::max(worst, correct_island(k));
   }
   return worst;
 }

@@ -20,6 +20,10 @@ class SequentialImpulses final : public ContactSolver {
 
  private:
   ContactConfig config_;
+  // The bodies of the last solve's contacts (moved_, marked in touched_) and, for them only,
+  // what undo() puts back: a small group's solve costs its own size, not the body count.
+  std::vector<int> moved_;
+  std::vector<char> touched_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
   std::vector<double> intervals_;                // h per body [s]

@@ -7,12 +7,11 @@
 namespace flotsam {
 namespace {
 
-// Axis along which the active boxes' centres have the larger variance.
-int spread_axis(const std::vector<Aabb>& boxes, const std::vector<char>& active) {
+// Axis along which the listed boxes' centres have the larger variance.
+int spread_axis(const std::vector<Aabb>& boxes, const std::vector<int>& listed) {
   Vec2 sum = Vec2::Zero(), sum_squares = Vec2::Zero();
   int n = 0;
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    if (!active[i]) continue;
+  for (const int i : listed) {
     const Vec2 c = 0.5 * (boxes[i].lower + boxes[i].upper);
     sum += c;
     sum_squares += c.cwiseProduct(c);
@@ -27,17 +26,28 @@ int spread_axis(const std::vector<Aabb>& boxes, const std::vector<char>& active)
 
 void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
                                std::vector<BodyPair>& pairs) {
+  std::vector<int> listed;
+  for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+    if (active[i]) listed.push_back(i);
+  find_pairs(boxes, active, listed, pairs);
+}
+
+void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
+                               const std::vector<int>& listed, std::vector<BodyPair>& pairs) {
   pairs.clear();
   const int n = static_cast<int>(boxes.size());
-  const int axis = spread_axis(boxes, active);
+  const int axis = spread_axis(boxes, listed);
   const int other = 1 - axis;
 
   // Keep the previous order, dropping bodies no longer active and appending new ones.
-  std::vector<char> listed(static_cast<std::size_t>(n), 0);
-  std::erase_if(order_, [&](int i) { return i >= n || !active[i]; });
-  for (int i : order_) listed[i] = 1;
-  for (int i = 0; i < n; ++i) {
-    if (active[i] && !listed[i]) order_.push_back(i);
+  in_order_.resize(static_cast<std::size_t>(n), 0);
+  std::erase_if(order_, [&](int i) {
+    if (i < n && active[i]) return false;
+    if (i < n) in_order_[i] = 0;
+    return true;
+  });
+  for (const int i : listed) {
+    if (!in_order_[i]) order_.push_back(i), in_order_[i] = 1;
   }
 
   auto key = [&](int i) { return boxes[i].lower[axis]; };

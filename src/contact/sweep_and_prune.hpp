@@ -25,6 +25,10 @@ class SweepAndPrune {
   /// `active` flag is set. Appends to `pairs` after clearing it; order unspecified.
   void find_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
                   std::vector<BodyPair>& pairs);
+  /// The same with `listed`, the indices of the active boxes in ascending order: costs the
+  /// listed boxes and the last call's, not all of them (a small contact group in a large set).
+  void find_pairs(const std::vector<Aabb>& boxes, const std::vector<char>& active,
+                  const std::vector<int>& listed, std::vector<BodyPair>& pairs);
 
   int axis() const { return axis_; }
   /// The order kept between steps and its axis: a checkpoint keeps them so that a restarted run
@@ -33,12 +37,19 @@ class SweepAndPrune {
   void restore(std::vector<int> order, int axis) {
     order_ = std::move(order);
     axis_ = axis;
+    in_order_.clear();  // marked afresh below
+    for (const int i : order_) {
+      if (i >= static_cast<int>(in_order_.size()))
+        in_order_.resize(static_cast<std::size_t>(i) + 1, 0);
+      in_order_[i] = 1;
+    }
   }
   long swaps_last_step() const { return swaps_; }  // insertion-sort moves [-], for profiling
 
  private:
-  std::vector<int> order_;  // active body indices sorted by lower bound on the sweep axis
-  int axis_ = 0;            // 0: x, 1: y
+  std::vector<int> order_;      // active body indices sorted by lower bound on the sweep axis
+  std::vector<char> in_order_;  // 1 for the indices in order_
+  int axis_ = 0;                // 0: x, 1: y
   long swaps_ = 0;
   // Sorted copies of the bounds, contiguous for the sweep.
   std::vector<double> lower_, upper_, other_lower_, other_upper_;

@@ -88,6 +88,25 @@ TEST(Islands, AreTheConnectedComponentsOfTheContactGraph) {
   }
 }
 
+// group() touches only the bodies of its contacts (a small group's step costs its own size): one
+// object used for contact sets of different bodies in turn must give what a fresh one gives.
+TEST(Islands, AReusedObjectGroupsAsAFreshOne) {
+  Islands reused;
+  const int n = 400;
+  for (unsigned seed = 1; seed <= 50; ++seed) {
+    std::vector<ContactConstraint> contacts = random_contacts(n, 3 + 7 * (seed % 13), seed);
+    std::vector<ContactConstraint> again = contacts;
+    Islands fresh;
+    fresh.group(contacts, n);
+    reused.group(again, n);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    ASSERT_EQ(reused.count(), fresh.count());
+    ASSERT_EQ(reused.largest_first(), fresh.largest_first());
+    for (std::size_t m = 0; m < contacts.size(); ++m)
+      EXPECT_EQ(again[m].segment, contacts[m].segment);
+  }
+}
+
 TEST(Islands, ALogAgainstAPierAndAnotherAgainstTheSamePierAreTwoIslands) {
   std::vector<ContactConstraint> contacts(2);
   contacts[0].a = 0, contacts[0].b = -1, contacts[0].segment = 7;

@@ -99,6 +99,38 @@ TEST(SweepAndPrune, SamePairsInTheSameOrderOnOneAndTwoThreads) {
   EXPECT_EQ(pairs[0], pairs[1]);  // the same pairs in the same order
 }
 
+// A contact group's detection lists its bodies (find_pairs with `listed`): one sweep used for
+// groups of different bodies in turn, and for all of them, finds what brute force finds.
+TEST(SweepAndPrune, ListedGroupsInTurnGiveTheBruteForcePairs) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int n = 2000;
+  std::vector<Aabb> boxes(static_cast<std::size_t>(n));
+  for (Aabb& b : boxes) {
+    const Vec2 c(400.0 * unit(rng), 400.0 * unit(rng)),
+        h(0.5 + 10.0 * unit(rng), 0.5 + 10.0 * unit(rng));
+    b = {c - h, c + h};
+  }
+  SweepAndPrune sweep;
+  std::vector<BodyPair> found, expected;
+  for (int round = 0; round < 40; ++round) {
+    SCOPED_TRACE(::testing::Message() << "round " << round);
+    std::vector<char> active(static_cast<std::size_t>(n), 0);
+    std::vector<int> listed;
+    const double share = round % 5 == 4 ? 1.0 : 0.01 + 0.1 * unit(rng);  // [-] of the bodies
+    for (int i = 0; i < n; ++i) {
+      if (unit(rng) < share) active[i] = 1, listed.push_back(i);
+    }
+    sweep.find_pairs(boxes, active, listed, found);
+    brute_force_pairs(boxes, active, expected);
+    ASSERT_EQ(sorted(found), sorted(expected));
+    for (Aabb& b : boxes) {  // the bodies move on a little
+      const Vec2 d(unit(rng) - 0.5, unit(rng) - 0.5);
+      b = {b.lower + d, b.upper + d};
+    }
+  }
+}
+
 TEST(SweepAndPrune, ExactlyTouchingNeighboursAreInContact) {
   // 100 x 100 lattice of 4 m x 1 m boxes: each touches its neighbours along whole edges.
   const BodySet bodies = make_bodies({"touching", 0.0, false, true}, 10000, 1);
