@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -254,10 +255,22 @@ void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
   }
   schur_position_.clear();
   schur_position_.reserve(pairs);
+  carried_local_.assign(N2, {-1, -1});
   for (int a = 0; a < N2; ++a) {
     const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
     for (int p = begin; p < end; ++p)
       for (int q = begin; q < end; ++q) schur_position_.push_back(position(vertex[p], vertex[q]));
+    // The vertices that x_a interpolates from, among the row's (C's columns).
+    const int N1 = mesh_.vertex_count;
+    const std::array<int, 2> ends =
+        a < N1 ? std::array<int, 2>{a, -1}
+               : std::array<int, 2>{mid_ends_[a - N1][0], mid_ends_[a - N1][1]};
+    for (int m = 0; m < 2 && ends[m] >= 0; ++m) {
+      const int* found = std::find(vertex + begin, vertex + end, ends[m]);
+      if (found == vertex + end)
+        throw std::logic_error("SegregatedStep: a node's vertex is not in its row of G");
+      carried_local_[a][m] = static_cast<int>(found - (vertex + begin));
+    }
   }
   m1_position_.clear();
   m1_value_.clear();
@@ -566,17 +579,29 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     std::fill(S_values, S_values + S_.nonZeros(), 0.0);
     for (size_t k = 0; k < m1_position_.size(); ++k)
       S_values[m1_position_[k]] = m1_value_[k] / dt;  // (8)
+    // The depth's change carried by u^n, theta (d_eta u^n) in (9) as in the coupled step (with
+    // it explicit the step is unstable at a Froude number of 0.5 and Courant 4.4: the bump):
+    // C x = G^T (theta u^n_a x_a), x_a at P2 node a interpolated from the vertices, assembled
+    // on S's pattern. It makes the system S - C unsymmetric; the SPD S factorised preconditions
+    // it.
+    w.carried_values.assign(S_.nonZeros(), 0.0);
+    double* C_values = w.carried_values.data();
     const int* position = schur_position_.data();
     const double* slope = G_.valuePtr();  // rows 2a, 2a + 1: G_(2a+c),i at begin + k, end + k
     for (int a = 0; a < N2; ++a) {
       const double D = th * th * g * H[a] / A[a];  // [1/s] D_a = D P_a
       const Mat2* P_a = w.P.of(a);
       const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
-      for (int p = 0; p < end - begin; ++p) {
+      const std::array<int, 2>& ends = carried_local_[a];
+      const double weight = ends[1] < 0 ? th : 0.5 * th;  // [-] theta times x_a's weights
+      const Vec2 u_n(n.u[a], n.v[a]);
+      for (int p = 0; p < end - begin; ++p, position += end - begin) {
         const Vec2 slope_p(slope[begin + p], slope[end + p]);
         const Vec2 w_p = P_a ? Vec2(D * *P_a * slope_p) : Vec2(D * slope_p);
         for (int q = 0; q < end - begin; ++q)
-          S_values[*position++] += w_p.dot(Vec2(slope[begin + q], slope[end + q]));
+          S_values[position[q]] += w_p.dot(Vec2(slope[begin + q], slope[end + q]));
+        const double c = weight * slope_p.dot(u_n);  // [m^2/s]
+        for (int m = 0; m < 2 && ends[m] >= 0; ++m) C_values[position[ends[m]]] += c;
       }
     }
     w.b.noalias() = G_.transpose() * w.flux;  // (9)
@@ -611,26 +636,10 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
       d_eta[node.vertex] = flow.boundaries[node.condition].value(it.t_new) - n.eta[node.vertex];
     }
     eliminate_elevation_boundaries(w);
-    // The depth's change carried by u^n, theta (d_eta u^n) in (9) as in the coupled step (with
-    // it explicit the step is unstable at a Froude number of 0.5 and Courant 4.4: the bump):
-    // C x = G^T (theta u^n_a x_a), x at the P2 nodes interpolated from the vertices. It makes
-    // the system S - C unsymmetric; the SPD S factorised preconditions it.
-    const auto carried = [&](const Vector& x, Vector& y) {  // C x [m^3/s]
-      w.carried_flux.resize(2 * N2);
-      for (int a = 0; a < N2; ++a) {
-        const double x_a =
-            a < N1 ? x[a] : 0.5 * (x[mid_ends_[a - N1][0]] + x[mid_ends_[a - N1][1]]);
-        w.carried_flux[2 * a] = th * n.u[a] * x_a;
-        w.carried_flux[2 * a + 1] = th * n.v[a] * x_a;
-      }
-      y.noalias() = G_.transpose() * w.carried_flux;
-    };
-    d_eta = solve_elevation(S_, w.b_free, [&](const Vector& x, Vector& y) {
-      carried(x, w.carried);
-      y.noalias() = S_ * x;
-      for (int i = 0; i < N1; ++i)
-        if (!w.dirichlet[i]) y[i] -= w.carried[i];
-    });
+    const Eigen::Map<const SparseMatrix> system(N1, N1, S_.nonZeros(), S_.outerIndexPtr(),
+                                                S_.innerIndexPtr(), w.system_values.data());
+    d_eta = solve_elevation(S_, w.b_free,
+                            [&](const Vector& x, Vector& y) { y.noalias() = system * x; });
 
     // 4. Correction (M-23).
     w.G_d_eta.noalias() = G_ * d_eta;
@@ -649,15 +658,14 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
 
     // Water balance (water_balance.hpp): open boundaries (10), and the elevation boundaries'
     // rows of (M-22) as assembled, (S - C) d_eta - b, the outflow through each such vertex.
-    carried(d_eta, w.carried);
     WaterBalance& balance = s.balance_;
     balance.group_rate = open_flux;
     for (size_t k = 0; k < s.bc_.elevation_nodes.size(); ++k) {
       const int i = s.bc_.elevation_nodes[k].vertex;
-      double S_d_eta = 0.0;  // [m^3/s] row i of S (kept before the elimination) times d_eta
+      double flow_in = 0.0;  // [m^3/s] row i of S - C (kept before the elimination) times d_eta
       for (int p = w.row_start[i]; p < w.row_start[i + 1]; ++p)
-        S_d_eta += w.row_value[p] * d_eta[w.row_column[p]];
-      balance.group_rate[s.elevation_group_[k]] -= S_d_eta - w.carried[i] - b[i];
+        flow_in += w.row_value[p] * d_eta[w.row_column[p]];
+      balance.group_rate[s.elevation_group_[k]] -= flow_in - b[i];
     }
   } catch (const RunError&) {
     s.state_ = s.previous_;
@@ -670,15 +678,16 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
   return report;
 }
 
-// S_'s rows and columns of the elevation boundaries' vertices (w.dirichlet) replaced by the
-// identity's, their known d_eta moved to the right-hand side: w.b_free from w.b. S_'s rows there
-// are kept first (w.row_*: the water balance's). Columns in increasing order, as a sweep over the
-// whole matrix would take them.
+// The system S - C with the rows and columns of the elevation boundaries' vertices
+// (w.dirichlet) replaced by the identity's in S_ and w.system_values, their known d_eta moved to
+// the right-hand side (w.b_free from w.b); C keeps its columns there (C x takes their d_eta as
+// x). The rows of S - C there are kept first (w.row_*: the water balance's).
 void SegregatedStep::eliminate_elevation_boundaries(Work& w) {
   const int N1 = mesh_.vertex_count;
   const int* outer = S_.outerIndexPtr();
   const int* index = S_.innerIndexPtr();
-  double* value = S_.valuePtr();
+  double* S = S_.valuePtr();
+  const double* C = w.carried_values.data();
   const auto at = [&](int i, int j) {  // S_'s position of (i, j), in the pattern
     return static_cast<int>(std::lower_bound(index + outer[j], index + outer[j + 1], i) - index);
   };
@@ -689,20 +698,29 @@ void SegregatedStep::eliminate_elevation_boundaries(Work& w) {
   for (int i = 0; i < N1; ++i) {  // the rows, by the symmetric pattern's column i
     if (w.dirichlet[i])
       for (int p = outer[i]; p < outer[i + 1]; ++p) {
+        const int k = at(i, index[p]);
         w.row_column.push_back(index[p]);
-        w.row_value.push_back(value[at(i, index[p])]);
+        w.row_value.push_back(S[k] - C[k]);
       }
     w.row_start[i + 1] = static_cast<int>(w.row_column.size());
   }
+  w.system_values.resize(S_.nonZeros());
+  for (int j = 0; j < N1; ++j) {
+    if (w.dirichlet[j])
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {  // column j: S's to the right-hand side
+        const int i = index[p];
+        if (!w.dirichlet[i]) w.b_free[i] -= S[p] * w.d_eta[j];
+        S[p] = i == j ? 1.0 : 0.0;
+      }
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      w.system_values[p] = w.dirichlet[index[p]] ? S[p] : S[p] - C[p];
+  }
   for (int j = 0; j < N1; ++j) {
     if (!w.dirichlet[j]) continue;
-    for (int p = outer[j]; p < outer[j + 1]; ++p) {  // column j
-      const int i = index[p];
-      if (!w.dirichlet[i]) w.b_free[i] -= value[p] * w.d_eta[j];
-      value[p] = i == j ? 1.0 : 0.0;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) {  // row j
+      const int k = at(j, index[p]);
+      S[k] = w.system_values[k] = index[p] == j ? 1.0 : 0.0;
     }
-    for (int p = outer[j]; p < outer[j + 1]; ++p)
-      value[at(j, index[p])] = index[p] == j ? 1.0 : 0.0;
     w.b_free[j] = w.d_eta[j];
   }
 }

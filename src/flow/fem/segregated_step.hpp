@@ -89,7 +89,9 @@ class SegregatedStep {
   };
   // The step's vectors, kept from one step to the next (no allocation per step).
   struct Work {
-    Vector G_eta, A, flux, b, b_free, d_eta, G_d_eta, carried, carried_flux;
+    Vector G_eta, A, flux, b, b_free, d_eta, G_d_eta;
+    std::vector<double> carried_values;  // C in S_'s pattern [m^2/s]
+    std::vector<double> system_values;   // S - C in S_'s pattern, eliminated [m^2/s]
     std::vector<double> q_x, q_y;
     NodeMatrices P, P_after;      // P_a, and the tangent applied after the correction (M-23)
     std::vector<char> dirichlet;  // per vertex: on an elevation boundary
@@ -122,7 +124,10 @@ class SegregatedStep {
   SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
   std::vector<int> schur_position_;  // per node, per pair (i, j) of its vertices: S_'s value
   std::vector<int> m1_position_;     // M_1's entries in S_'s values
-  std::vector<double> m1_value_;     // [m^2]
+  // Per node a: where the vertices that a P1 field at a interpolates from (a itself, or a mid
+  // node's two ends; -1: none) are among its row's of G (C's columns).
+  std::vector<std::array<int, 2>> carried_local_;
+  std::vector<double> m1_value_;  // [m^2]
   // The momentum predictor (M-21) works on the P2 nodes renumbered by locality: node a is
   // unknown node_order_[a] of K_, of the factor and of the predictor's vectors.
   std::vector<int> node_order_;
