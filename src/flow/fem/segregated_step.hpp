@@ -27,9 +27,11 @@
 // slip nodes; zero at velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing
 // (7) is integrated in M_L's quadrature too. The momentum predictor is solved by conjugate
 // gradients preconditioned with its matrix's zero fill-in incomplete Cholesky factor, on the P2
-// nodes renumbered by locality (reverse Cuthill-McKee). The elevation system is solved by GMRES
-// preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part, refactorised when
-// GMRES needs more than max_extra_iterations beyond what it needed after the last factorisation.
+// nodes renumbered by locality (reverse Cuthill-McKee), u and v in one sweep
+// (pair_conjugate_gradients.hpp). C is assembled with S on S's pattern. The elevation system is
+// solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part,
+// refactorised when GMRES needs more than max_extra_iterations beyond what it needed after the
+// last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
