@@ -1,7 +1,8 @@
 // The scatter of element matrices into the flow system (LinearSystem::add, spec 1): every
-// element's 15 x 15 matrix and 15-vector added into the global pattern, colour by colour in one
-// thread as the engine does, on the paper's channel (examples/bridge_piers.yaml) at far-field
-// mesh size 14.5 m (4.5k elements) and 4.4 m (35k elements).
+// element's 15 x 15 matrix and 15-vector added into the global pattern, in the engine's order
+// (coloured blocks of elements, element_blocks.hpp) in one thread, on the paper's channel
+// (examples/bridge_piers.yaml) at far-field mesh size 14.5 m (4.5k elements) and 4.4 m (35k
+// elements).
 //
 //   cmake --build <build> --target bench_linear_system_scatter
 //   <build>/bench/bench_linear_system_scatter --benchmark_min_time=0.5
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <map>
 
+#include "flow/fem/element_blocks.hpp"
 #include "flow/fem/linear_system.hpp"
 #include "paper_channel.hpp"
 
@@ -29,12 +31,12 @@ const Mesh& channel_mesh(double mesh_size) {
   return meshes.emplace(mesh_size, std::move(mesh)).first->second;
 }
 
-// What both scatters add: the system of the mesh of far-field size range(0) / 10 m, its element
-// colours, and one random element matrix and vector.
+// What both scatters add: the system of the mesh of far-field size range(0) / 10 m, its coloured
+// element blocks, and one random element matrix and vector.
 struct Scatter {
   explicit Scatter(const benchmark::State& state)
       : mesh(channel_mesh(static_cast<double>(state.range(0)) / 10.0)),
-        colours(element_colours(mesh)) {
+        blocks(element_blocks(mesh)) {
     system.setup(mesh, {}, {});
   }
   // After the timed loop: keeps the sums alive and reports the time per element.
@@ -48,7 +50,7 @@ struct Scatter {
 
   const Mesh& mesh;
   LinearSystem system;
-  std::vector<std::vector<int>> colours;
+  ElementBlocks blocks;
   LocalMatrix K = LocalMatrix::Random();
   LocalVector F = LocalVector::Random();
 };
@@ -56,8 +58,10 @@ struct Scatter {
 void scatter(benchmark::State& state) {
   Scatter s(state);
   for (auto _ : state)
-    for (const auto& colour : s.colours)
-      for (int e : colour) s.system.add(e, s.system.element_rows(s.mesh, e), s.K, s.F);
+    for (const auto& colour : s.blocks.colours)
+      for (const auto& block : colour)
+        for (int e = block[0]; e < block[1]; ++e)
+          s.system.add(e, s.system.element_rows(s.mesh, e), s.K, s.F);
   s.report(state);
 }
 BENCHMARK(scatter)->Arg(145)->Arg(44)->Unit(benchmark::kMillisecond);
@@ -70,15 +74,16 @@ void scatter_by_search(benchmark::State& state) {
   const int* inner = s.system.A.innerIndexPtr();
   double* values = s.system.A.valuePtr();
   for (auto _ : state)
-    for (const auto& colour : s.colours)
-      for (int e : colour) {
-        const auto rows = s.system.element_rows(s.mesh, e);
-        for (int j = 0; j < 15; ++j)
-          for (int i = 0; i < 15; ++i)
-            values[std::lower_bound(inner + outer[rows[j]], inner + outer[rows[j] + 1], rows[i]) -
-                   inner] += s.K(i, j);
-        for (int i = 0; i < 15; ++i) s.system.b[rows[i]] += s.F(i);
-      }
+    for (const auto& colour : s.blocks.colours)
+      for (const auto& block : colour)
+        for (int e = block[0]; e < block[1]; ++e) {
+          const auto rows = s.system.element_rows(s.mesh, e);
+          for (int j = 0; j < 15; ++j)
+            for (int i = 0; i < 15; ++i)
+              values[std::lower_bound(inner + outer[rows[j]], inner + outer[rows[j] + 1], rows[i]) -
+                     inner] += s.K(i, j);
+          for (int i = 0; i < 15; ++i) s.system.b[rows[i]] += s.F(i);
+        }
   s.report(state);
 }
 BENCHMARK(scatter_by_search)->Arg(145)->Arg(44)->Unit(benchmark::kMillisecond);

@@ -89,4 +89,38 @@ void IncompleteCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) con
   }
 }
 
+// solve's two sweeps on both components: component c's operations are those of solve on it.
+std::array<double, 2> IncompleteCholesky::solve_pair(const std::vector<double>& r,
+                                                     std::vector<double>& z) const {
+  const int n = static_cast<int>(row_start_.size()) - 1;
+  for (int i = 0; i < n; ++i) {  // L y = r
+    double sum_0 = r[2 * i], sum_1 = r[2 * i + 1];
+    const int diagonal = row_start_[i + 1] - 1;
+    const int* index = index_ + outer_[i] - row_start_[i];  // index[p]: column of entry p
+    for (int p = row_start_[i]; p < diagonal; ++p) {
+      const int j = index[p];
+      sum_0 -= value_[p] * z[2 * j];
+      sum_1 -= value_[p] * z[2 * j + 1];
+    }
+    z[2 * i] = sum_0 / value_[diagonal];
+    z[2 * i + 1] = sum_1 / value_[diagonal];
+  }
+  std::array<double, 2> rz{0.0, 0.0};
+  for (int i = n - 1; i >= 0; --i) {  // L^T z = y, by rows of L; z_i is final once divided
+    const int diagonal = row_start_[i + 1] - 1;
+    const int* index = index_ + outer_[i] - row_start_[i];
+    const double z_0 = z[2 * i] / value_[diagonal], z_1 = z[2 * i + 1] / value_[diagonal];
+    z[2 * i] = z_0;
+    z[2 * i + 1] = z_1;
+    rz[0] += r[2 * i] * z_0;
+    rz[1] += r[2 * i + 1] * z_1;
+    for (int p = row_start_[i]; p < diagonal; ++p) {
+      const int j = index[p];
+      z[2 * j] -= value_[p] * z_0;
+      z[2 * j + 1] -= value_[p] * z_1;
+    }
+  }
+  return rz;
+}
+
 }  // namespace flotsam

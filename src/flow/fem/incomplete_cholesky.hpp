@@ -7,6 +7,7 @@
 // positive (A is not an M-matrix: IC(0) may break down), the factor is redone with the diagonal
 // raised by a shift that doubles until it succeeds (Manteuffel's shifted IC).
 #include <Eigen/Sparse>
+#include <array>
 #include <vector>
 
 namespace flotsam {
@@ -24,6 +25,9 @@ class IncompleteCholesky {
                  const std::vector<char>& fixed);
   /// z = (L L^T)^-1 r.
   void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  /// The same for two vectors at once, interleaved (entry 2 i + c of r and z: component c of
+  /// unknown i), each sweep reading L once for both; returns r_c . z_c per component.
+  std::array<double, 2> solve_pair(const std::vector<double>& r, std::vector<double>& z) const;
   /// The relative diagonal shift of the last factorisation (0: none was needed) [-].
   double shift() const { return shift_; }
 

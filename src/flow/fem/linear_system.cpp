@@ -3,7 +3,6 @@
 #include "flow/fem/linear_system.hpp"
 
 #include <algorithm>
-#include <cstdint>
 
 #include "core/error.hpp"
 
@@ -167,29 +166,6 @@ double LinearSystem::saved_row_residual(int slot, const Eigen::VectorXd& x) cons
   double r = -saved_rhs_[slot];
   for (size_t i = 0; i < list.column.size(); ++i) r += saved_values_[slot][i] * x[list.column[i]];
   return r;
-}
-
-// ---- colouring ----------------------------------------------------------------------------
-
-std::vector<std::vector<int>> element_colours(const Mesh& mesh) {
-  std::vector<std::vector<int>> vertex_elements(mesh.vertex_count);
-  for (int e = 0; e < mesh.element_count(); ++e)
-    for (int k = 0; k < 3; ++k) vertex_elements[mesh.elements[e][k]].push_back(e);
-  std::vector<int> colour(mesh.element_count(), -1);
-  std::vector<std::vector<int>> groups;
-  for (int e = 0; e < mesh.element_count(); ++e) {
-    std::uint64_t used = 0;
-    for (int k = 0; k < 3; ++k)
-      for (int other : vertex_elements[mesh.elements[e][k]])
-        if (colour[other] >= 0 && colour[other] < 64) used |= std::uint64_t{1} << colour[other];
-    int c = 0;
-    while (c < 64 && (used >> c & 1U)) ++c;
-    if (c == 64) throw std::logic_error("element_colours: more than 64 colours needed");
-    colour[e] = c;
-    if (c >= static_cast<int>(groups.size())) groups.resize(c + 1);
-    groups[c].push_back(e);
-  }
-  return groups;
 }
 
 }  // namespace flotsam

@@ -31,8 +31,8 @@ class LinearSystem {
 
   void set_zero();
   /// Adds the local matrix and vector of `element`, whose rows are element_rows(mesh, element).
-  /// Elements of one colour (element_colours) may be added concurrently: they share no node, so
-  /// they touch no common entry.
+  /// The blocks of one colour (element_blocks.hpp) may be added concurrently: they share no
+  /// node, so they touch no common entry.
   void add(int element, const std::array<int, 15>& rows, const LocalMatrix& K,
            const LocalVector& F);
   /// Adds `value` to A(row, column), an entry of the pattern (serial use only).
@@ -72,10 +72,5 @@ class LinearSystem {
   std::vector<std::vector<double>> saved_values_;
   std::vector<double> saved_rhs_;
 };
-
-/// Elements grouped so that no two elements of a group share a node (greedy colouring):
-/// assembling one group in parallel is race-free, and the sum into each matrix entry is in the
-/// same order for any number of threads.
-std::vector<std::vector<int>> element_colours(const Mesh& mesh);
 
 }  // namespace flotsam

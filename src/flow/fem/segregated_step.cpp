@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "flow/fem/conjugate_gradients.hpp"
 #include "flow/fem/node_ordering.hpp"
+#include "flow/fem/pair_conjugate_gradients.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "flow/fem/turbulence.hpp"
 
@@ -23,6 +24,11 @@ constexpr int max_fresh_iterations = 40;   // GMRES iterations with a fresh fact
 constexpr double gmres_tolerance = 1e-12;  // [-] |r| / |b| that ends an elevation solve
 constexpr int max_cg_iterations = 200;     // [-] of the momentum predictor (incomplete Cholesky
                                            // preconditioned: a few to ten)
+// |r| / |b| that ends the momentum predictor's solve, per component [-]: u~'s relative error is
+// then 1e-8 times the matrix's condition (lumped mass over dt plus the viscous stiffness), far
+// below the step's own error (the verification cases and the step-convergence test pass as
+// with 1e-10, which took a third more iterations: docs/model.md "The segregated step").
+constexpr double predictor_tolerance = 1e-8;
 // s, the part of the surface slope at t^n, g G eta^n, taken at the paths' feet (M-20); the
 // rest, and the implicit increment theta g G d_eta, at the arriving node (M-21), (M-23). With
 // s = 1/2 the slope's time integral along the path is centred in space, as the advection by
@@ -44,7 +50,7 @@ using Vector = Eigen::VectorXd;
 // max_iterations + 1 when |b - A x| > tolerance |b| after them (x then holds the last iterate).
 template <class Apply, class Precondition>
 int gmres(const Apply& apply, const Precondition& precondition, const Vector& b, Vector& x,
-          double tolerance, int max_iterations) {
+          double tolerance, int max_iterations, Eigen::MatrixXd& V, Eigen::MatrixXd& Z) {
   const Eigen::Index n = x.size();
   const int m = max_iterations;
   Vector r(n), w(n);
@@ -52,7 +58,9 @@ int gmres(const Apply& apply, const Precondition& precondition, const Vector& b,
   r = b - w;
   const double beta = r.norm(), stop = tolerance * std::max(b.norm(), 1e-300);
   if (beta <= stop) return 0;
-  Eigen::MatrixXd V(n, m + 1), Z(n, m), Hess = Eigen::MatrixXd::Zero(m + 1, m);
+  if (V.rows() != n || V.cols() < m + 1) V.resize(n, m + 1);  // kept by the caller
+  if (Z.rows() != n || Z.cols() < m) Z.resize(n, m);
+  Eigen::MatrixXd Hess = Eigen::MatrixXd::Zero(m + 1, m);
   Vector cs = Vector::Zero(m), sn = Vector::Zero(m), g = Vector::Zero(m + 1);
   V.col(0) = r / beta;
   g[0] = beta;
@@ -131,15 +139,6 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> column_assembled(int columns, 
 }
 
 }  // namespace
-
-// Per-node momentum loads of one step [m^3 s^-2], the lumped friction [m^2/s], and the P1
-// continuity source [m^3/s].
-struct SegregatedStep::Loads {
-  std::vector<Vec2> force;      // (7) forcing, minus the explicit transposed viscous part of (4)
-  std::vector<double> gamma_m;  // sum over elements of m_a^e gamma_a: friction (5), lumped
-  Vector source;                // (11) (q_i, S)
-  std::vector<double> depth;    // H^n per node [m]
-};
 
 SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.mesh()) {
   const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count, E = mesh_.element_count();
@@ -261,10 +260,22 @@ void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
   }
   schur_position_.clear();
   schur_position_.reserve(pairs);
+  carried_local_.assign(N2, {-1, -1});
   for (int a = 0; a < N2; ++a) {
     const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
     for (int p = begin; p < end; ++p)
       for (int q = begin; q < end; ++q) schur_position_.push_back(position(vertex[p], vertex[q]));
+    // The vertices that x_a interpolates from, among the row's (C's columns).
+    const int N1 = mesh_.vertex_count;
+    const std::array<int, 2> ends =
+        a < N1 ? std::array<int, 2>{a, -1}
+               : std::array<int, 2>{mid_ends_[a - N1][0], mid_ends_[a - N1][1]};
+    for (int m = 0; m < 2 && ends[m] >= 0; ++m) {
+      const int* found = std::find(vertex + begin, vertex + end, ends[m]);
+      if (found == vertex + end)
+        throw std::logic_error("SegregatedStep: a node's vertex is not in its row of G");
+      carried_local_[a][m] = static_cast<int>(found - (vertex + begin));
+    }
   }
   m1_position_.clear();
   m1_value_.clear();
@@ -277,6 +288,23 @@ void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
 
 SegregatedStep::~SegregatedStep() = default;
 
+void SegregatedStep::NodeMatrices::clear(int node_count) {
+  if (static_cast<int>(at.size()) != node_count) at.assign(node_count, -1);
+  for (int node : nodes) at[node] = -1;
+  nodes.clear();
+  matrix.clear();
+}
+
+void SegregatedStep::NodeMatrices::set(int node, const Mat2& m) {
+  if (at[node] < 0) {
+    at[node] = static_cast<int>(matrix.size());
+    nodes.push_back(node);
+    matrix.push_back(m);
+  } else {
+    matrix[at[node]] = m;
+  }
+}
+
 // One pass over the elements: the viscous stiffness K_nu with this step's nu_e (M-3) (without
 // an eddy viscosity nu_e is the constant nu and K_nu is assembled at the first step only), the
 // explicit transposed-gradient viscous part, the forcing (7), the friction rate (5) lumped at
@@ -287,7 +315,7 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   const int N2 = mesh_.node_count();
   loads.force.assign(N2, Vec2::Zero());
   loads.gamma_m.assign(N2, 0.0);
-  loads.source = Vector::Zero(mesh_.vertex_count);
+  loads.source.setZero(mesh_.vertex_count);
   const bool constant_k = flow.turbulence == TurbulenceModel::none;
   const bool assemble_k = !(constant_k && k_viscosity_ == flow.viscosity);
   if (assemble_k) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
@@ -300,7 +328,10 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   // elements at a node do not each compute it again.
   const bool by_element = !s.friction_coefficient_.empty();
   loads.depth.resize(N2);
-  std::vector<double> speed(N2), node_rate(by_element ? 0 : N2);  // [m/s], [1/s]
+  std::vector<double>& speed = loads.speed;          // [m/s]
+  std::vector<double>& node_rate = loads.node_rate;  // [1/s]
+  speed.resize(N2);
+  node_rate.resize(by_element ? 0 : N2);
   for (int a = 0; a < N2; ++a) {
     loads.depth[a] = s.node_depth_of(n, a);
     speed[a] = std::hypot(n.u[a], n.v[a]);
@@ -377,47 +408,61 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   k_viscosity_ = constant_k ? flow.viscosity : std::numeric_limits<double>::quiet_NaN();
 }
 
-// (M-21) for u and v apart: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -
+// (M-21) for u and v: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -
 // (1-theta) K_nu u^n, A_a = m_a/dt + gamma_a m_a, velocity nodes fixed at their boundary values
 // (set in u, v on entry), by conjugate gradients preconditioned with the matrix's zero fill-in
 // incomplete Cholesky factor (made each step: friction and the eddy viscosity change the
-// matrix), on the nodes in K_'s order (node_order_).
+// matrix), on the nodes in K_'s order (node_order_), both components in one sweep.
 void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Prediction& in,
                                       std::vector<double>& u, std::vector<double>& v) {
   const int N2 = mesh_.node_count();
   const FlowState& n = s.previous_;
-  std::vector<char> fixed(N2, 0);
-  for (const auto& node : s.bc_.velocity_nodes) fixed[node_order_[node.node]] = 1;
-  Vector A(N2);  // [m^2/s] in K_'s order
-  for (int a = 0; a < N2; ++a) A[node_order_[a]] = (*in.A)[a];
-  predictor_factor_.factorise(K_, in.theta, A, fixed);
-  Vector w_n(N2), b(N2), x(N2), K_w_n(N2);
-  for (int c = 0; c < 2; ++c) {
-    std::vector<double>& w = c == 0 ? u : v;
-    const std::vector<double>& w_old = c == 0 ? n.u : n.v;
-    const std::vector<double>& w_d = c == 0 ? s.u_departure_ : s.v_departure_;
-    for (int a = 0; a < N2; ++a) w_n[node_order_[a]] = w_old[a];
-    K_w_n.noalias() = K_ * w_n;
-    for (int a = 0; a < N2; ++a) {
-      const int k = node_order_[a];
-      b[k] = m_[a] * w_d[a] * in.inv_dt                                         // (1)
-             - (1.0 - slope_at_feet(in.theta)) * in.g * (*in.G_eta)[2 * a + c]  // (3) node, t^n
-             + (c == 0 ? in.loads->force[a].x() : in.loads->force[a].y())       // (4) (7)
-             - (1.0 - in.theta) * K_w_n[k];                                     // (4)
-      x[k] = fixed[k] ? w[a] : w_old[a];
+  Predictor& w = predictor_;
+  w.fixed.assign(N2, 0);
+  for (const auto& node : s.bc_.velocity_nodes) w.fixed[node_order_[node.node]] = 1;
+  w.A.resize(N2);  // [m^2/s] in K_'s order
+  for (int a = 0; a < N2; ++a) w.A[node_order_[a]] = (*in.A)[a];
+  predictor_factor_.factorise(K_, in.theta, w.A, w.fixed);
+  w.x.resize(2 * static_cast<size_t>(N2));  // u^n, then u~, interleaved (entry 2 k + c)
+  w.b.resize(2 * static_cast<size_t>(N2));
+  for (int a = 0; a < N2; ++a) {
+    const int k = node_order_[a];
+    w.x[2 * k] = n.u[a];
+    w.x[2 * k + 1] = n.v[a];
+  }
+  pair_product(K_, 1.0, nullptr, nullptr, w.x, w.b);  // K_nu u^n
+  const double s_node = (1.0 - slope_at_feet(in.theta)) * in.g;
+  for (int a = 0; a < N2; ++a) {
+    const int k = node_order_[a];
+    const Vec2& force = in.loads->force[a];
+    for (int c = 0; c < 2; ++c)
+      w.b[2 * k + c] = m_[a] * (c == 0 ? s.u_departure_ : s.v_departure_)[a] * in.inv_dt  // (1)
+                       - s_node * (*in.G_eta)[2 * a + c]     // (3) node, t^n
+                       + force[c]                            // (4) (7)
+                       - (1.0 - in.theta) * w.b[2 * k + c];  // (4)
+    if (w.fixed[k]) {
+      w.x[2 * k] = u[a];
+      w.x[2 * k + 1] = v[a];
     }
-    const auto apply = [&](const Vector& p, Vector& y) {
-      y.noalias() = in.theta * (K_ * p);  // (4)
-      y += A.cwiseProduct(p);             // (1) (5)
-    };
-    const auto precondition = [&](const Vector& r, Vector& z) { predictor_factor_.solve(r, z); };
-    const int iterations =
-        conjugate_gradients(apply, precondition, fixed, b, x, 1e-10, max_cg_iterations);
-    if (iterations > max_cg_iterations)
+  }
+  const auto apply = [&](const std::vector<double>& p, std::vector<double>& y) {
+    return pair_product(K_, in.theta, w.A.data(), &w.fixed, p, y);  // (4) (1) (5)
+  };
+  const auto precondition = [&](const std::vector<double>& r, std::vector<double>& z) {
+    return predictor_factor_.solve_pair(r, z);
+  };
+  const std::array<int, 2> iterations = pair_conjugate_gradients(
+      apply, precondition, w.fixed, w.b, w.x, predictor_tolerance, max_cg_iterations, w.work);
+  for (int c = 0; c < 2; ++c) {
+    if (iterations[c] > max_cg_iterations)
       throw_run_error("flow: the momentum predictor (M-21) did not converge in {} iterations",
                       max_cg_iterations);
-    momentum_iterations_ += iterations;
-    for (int a = 0; a < N2; ++a) w[a] = x[node_order_[a]];
+    momentum_iterations_ += iterations[c];
+  }
+  for (int a = 0; a < N2; ++a) {
+    const int k = node_order_[a];
+    u[a] = w.x[2 * k];
+    v[a] = w.x[2 * k + 1];
   }
 }
 
@@ -443,12 +488,13 @@ Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vec
   // (the part C that the factor leaves out sets how many a fresh one needs).
   const int allowed = fresh ? max_fresh_iterations : fresh_iterations_ + max_extra_iterations;
   Vector x = Vector::Zero(b.size());
-  int iterations = gmres(apply, precondition, b, x, gmres_tolerance, allowed);
+  int iterations = gmres(apply, precondition, b, x, gmres_tolerance, allowed, work_.V, work_.Z);
   if (iterations > allowed && !fresh) {  // the factor aged too far: a fresh one
     elevation_iterations_ += allowed;
     factorise();
     x.setZero();
-    iterations = gmres(apply, precondition, b, x, gmres_tolerance, max_fresh_iterations);
+    iterations =
+        gmres(apply, precondition, b, x, gmres_tolerance, max_fresh_iterations, work_.V, work_.Z);
     fresh_iterations_ = iterations;
   } else if (fresh) {
     fresh_iterations_ = iterations;
@@ -469,61 +515,67 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
   const FlowState& n = s.previous_;
   FlowState& next = s.state_;
   const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count;
+  Work& w = work_;
   try {
     s.set_boundary_velocities(it);  // velocity and discharge nodes at t^{n+1}, in state_
-    Loads loads;
+    Loads& loads = loads_;
     assemble_momentum(s, it.t_source, loads);
 
     // 1. Advection (M-20): part of the slope at t^n and the explicit Coriolis carried to the feet.
     // G annihilates constants; taken on eta^n - eta^n_0 it does so exactly, so a lake at rest
     // stays at rest to the last bit rather than gaining round-off at every step.
-    const Vector eta_n = Eigen::Map<const Vector>(n.eta.data(), N1);
-    const Vector G_eta = G_ * (eta_n.array() - eta_n[0]).matrix();  // [m^2]
+    const Eigen::Map<const Vector> eta_n(n.eta.data(), N1);
+    w.G_eta.noalias() = G_ * (eta_n.array() - eta_n[0]).matrix();  // [m^2]
+    const Vector& G_eta = w.G_eta;
     const FlowConfig& flow = s.case_.flow;
     const double f = flow.coriolis
                          ? 2.0 * earth_rotation_rate * std::sin(flow.latitude_deg * pi / 180.0)
                          : 0.0;  // [1/s]
-    std::vector<double> q_x(N2), q_y(N2);
+    w.q_x.resize(N2);
+    w.q_y.resize(N2);
     for (int a = 0; a < N2; ++a) {
       const Vec2 u_a(n.u[a], n.v[a]);
       const Vec2 acceleration =
           -slope_at_feet(th) * g * Vec2(G_eta[2 * a], G_eta[2 * a + 1]) / m_[a] -
           f * Vec2(-u_a.y(), u_a.x());  // (3) (6), the parts at the feet
-      q_x[a] = u_a.x() + dt * acceleration.x();
-      q_y[a] = u_a.y() + dt * acceleration.y();
+      w.q_x[a] = u_a.x() + dt * acceleration.x();
+      w.q_y[a] = u_a.y() + dt * acceleration.y();
     }
-    s.characteristics_->advect(n.u, n.v, dt, q_x, q_y, s.u_departure_, s.v_departure_);
+    s.characteristics_->advect(n.u, n.v, dt, w.q_x, w.q_y, s.u_departure_, s.v_departure_);
 
     // 2. Momentum predictor (M-21), viscosity and friction implicit.
-    Vector A(N2);  // [m^2/s] m_a/dt + gamma_a m_a
-    for (int a = 0; a < N2; ++a) A[a] = m_[a] / dt + loads.gamma_m[a];
+    w.A.resize(N2);  // [m^2/s] m_a/dt + gamma_a m_a
+    for (int a = 0; a < N2; ++a) w.A[a] = m_[a] / dt + loads.gamma_m[a];
+    const Vector& A = w.A;
     predict_velocity(s, {th, g, 1.0 / dt, &G_eta, &A, &loads}, next.u, next.v);
 
-    // The constraint P_a of each node: free, fixed (velocity nodes), or u . normal = 0 (walls,
-    // and the tangent of elevation boundaries where water enters, from u^n).
-    // The tangent held at an elevation boundary (where water enters, which changes from step to
-    // step where eddies leave) is applied after the correction only, so that the matrix of
-    // (M-22) changes with H and gamma alone and its factor stays a good preconditioner.
-    std::vector<Mat2> P(N2, Mat2::Identity()), P_after(N2, Mat2::Identity());
-    for (const auto& node : s.bc_.velocity_nodes) P[node.node].setZero();
+    // The constraint P_a of each node: free (the identity, the nodes not listed), fixed
+    // (velocity nodes: zero), or u . normal = 0 (walls, and the tangent of elevation boundaries
+    // where water enters, from u^n). The tangent held at an elevation boundary (where water
+    // enters, which changes from step to step where eddies leave) is applied after the
+    // correction only, so that the matrix of (M-22) changes with H and gamma alone and its
+    // factor stays a good preconditioner.
+    w.P.clear(N2);
+    w.P_after.clear(N2);
+    for (const auto& node : s.bc_.velocity_nodes) w.P.set(node.node, Mat2::Zero());
     for (const SlipNode& slip : s.bc_.slip_nodes) {
       const Mat2 tangent = Mat2::Identity() - slip.normal * slip.normal.transpose();
       if (slip.outward.isZero())
-        P[slip.node] = tangent;  // wall
+        w.P.set(slip.node, tangent);  // wall
       else if (slip.outward.dot(Vec2(n.u[slip.node], n.v[slip.node])) <= 0.0)
-        P_after[slip.node] = tangent;
+        w.P_after.set(slip.node, tangent);
     }
     const std::vector<double>& H = loads.depth;  // [m] H^n
-    Vector flux(2 * N2);  // [m^2/s] H (theta P u~ + (1 - theta) u^n), by node
+    w.flux.resize(2 * N2);  // [m^2/s] H (theta P u~ + (1 - theta) u^n), by node
     for (int a = 0; a < N2; ++a) {
-      const bool fixed = P[a].isZero();
-      const Vec2 u_tilde =
-          fixed ? Vec2(next.u[a], next.v[a]) : Vec2(P[a] * Vec2(next.u[a], next.v[a]));
+      const Mat2* P_a = w.P.of(a);
+      const Vec2 u_tilde = !P_a || P_a->isZero() ? Vec2(next.u[a], next.v[a])
+                                                 : Vec2(*P_a * Vec2(next.u[a], next.v[a]));
       next.u[a] = u_tilde.x();
       next.v[a] = u_tilde.y();
       const Vec2 q = H[a] * (th * u_tilde + (1.0 - th) * Vec2(n.u[a], n.v[a]));  // (9)
-      flux[2 * a] = q.x();
-      flux[2 * a + 1] = q.y();
+      w.flux[2 * a] = q.x();
+      w.flux[2 * a + 1] = q.y();
     }
 
     // 3. Elevation (M-22): the Schur complement M_1/dt + theta^2 g G^T D G, SPD, assembled in
@@ -532,19 +584,34 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     std::fill(S_values, S_values + S_.nonZeros(), 0.0);
     for (size_t k = 0; k < m1_position_.size(); ++k)
       S_values[m1_position_[k]] = m1_value_[k] / dt;  // (8)
+    // The depth's change carried by u^n, theta (d_eta u^n) in (9) as in the coupled step (with
+    // it explicit the step is unstable at a Froude number of 0.5 and Courant 4.4: the bump):
+    // C x = G^T (theta u^n_a x_a), x_a at P2 node a interpolated from the vertices, assembled
+    // on S's pattern. It makes the system S - C unsymmetric; the SPD S factorised preconditions
+    // it.
+    w.carried_values.assign(S_.nonZeros(), 0.0);
+    double* C_values = w.carried_values.data();
     const int* position = schur_position_.data();
     const double* slope = G_.valuePtr();  // rows 2a, 2a + 1: G_(2a+c),i at begin + k, end + k
     for (int a = 0; a < N2; ++a) {
-      const Mat2 D_a = th * th * g * H[a] / A[a] * P[a];  // [1/s]
+      const double D = th * th * g * H[a] / A[a];  // [1/s] D_a = D P_a
+      const Mat2* P_a = w.P.of(a);
       const int begin = G_.outerIndexPtr()[2 * a], end = G_.outerIndexPtr()[2 * a + 1];
-      for (int p = 0; p < end - begin; ++p) {
-        const Vec2 w = D_a * Vec2(slope[begin + p], slope[end + p]);
+      const std::array<int, 2>& ends = carried_local_[a];
+      const double weight = ends[1] < 0 ? th : 0.5 * th;  // [-] theta times x_a's weights
+      const Vec2 u_n(n.u[a], n.v[a]);
+      for (int p = 0; p < end - begin; ++p, position += end - begin) {
+        const Vec2 slope_p(slope[begin + p], slope[end + p]);
+        const Vec2 w_p = P_a ? Vec2(D * *P_a * slope_p) : Vec2(D * slope_p);
         for (int q = 0; q < end - begin; ++q)
-          S_values[*position++] += w.dot(Vec2(slope[begin + q], slope[end + q]));
+          S_values[position[q]] += w_p.dot(Vec2(slope[begin + q], slope[end + q]));
+        const double c = weight * slope_p.dot(u_n);  // [m^2/s]
+        for (int m = 0; m < 2 && ends[m] >= 0; ++m) C_values[position[ends[m]]] += c;
       }
     }
-    const SparseMatrix& S = S_;
-    Vector b = loads.source + G_.transpose() * flux;  // (11) (9)
+    w.b.noalias() = G_.transpose() * w.flux;  // (9)
+    w.b += loads.source;                      // (11)
+    Vector& b = w.b;
     std::vector<double> open_flux(mesh_.group_names.size(), 0.0);
     EdgeValues ev;
     for (const auto& open : s.bc_.open_edges) {  // (10), the outflow, known
@@ -564,54 +631,31 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
         b[ev.nodes[m]] -= outflow[m];  // (10)
       }
     }
-    // Elevation boundaries: d_eta known there, eliminated symmetrically.
-    std::vector<char> dirichlet(N1, 0);
-    Vector d_eta = Vector::Zero(N1);
+    // Elevation boundaries: d_eta known there, eliminated symmetrically in S_ itself, after
+    // their rows are kept for the water balance.
+    w.dirichlet.assign(N1, 0);
+    Vector& d_eta = w.d_eta;
+    d_eta.setZero(N1);
     for (const auto& node : s.bc_.elevation_nodes) {
-      dirichlet[node.vertex] = 1;
+      w.dirichlet[node.vertex] = 1;
       d_eta[node.vertex] = flow.boundaries[node.condition].value(it.t_new) - n.eta[node.vertex];
     }
-    SparseMatrix S_free = S;
-    Vector b_free = b;
-    for (int j = 0; j < N1; ++j)
-      for (SparseMatrix::InnerIterator entry(S_free, j); entry; ++entry) {
-        const int i = static_cast<int>(entry.row());
-        if (!dirichlet[i] && !dirichlet[j]) continue;
-        if (!dirichlet[i]) b_free[i] -= entry.value() * d_eta[j];
-        entry.valueRef() = i == j ? 1.0 : 0.0;
-      }
-    for (int i = 0; i < N1; ++i)
-      if (dirichlet[i]) b_free[i] = d_eta[i];
-    // The depth's change carried by u^n, theta (d_eta u^n) in (9) as in the coupled step (with
-    // it explicit the step is unstable at a Froude number of 0.5 and Courant 4.4: the bump):
-    // C x = G^T (theta u^n_a x_a), x at the P2 nodes interpolated from the vertices. It makes
-    // the system S - C unsymmetric; the SPD S factorised preconditions it.
-    const auto carried = [&](const Vector& x, Vector& y) {  // C x [m^3/s]
-      Vector q(2 * N2);
-      for (int a = 0; a < N2; ++a) {
-        const double x_a =
-            a < N1 ? x[a] : 0.5 * (x[mid_ends_[a - N1][0]] + x[mid_ends_[a - N1][1]]);
-        q[2 * a] = th * n.u[a] * x_a;
-        q[2 * a + 1] = th * n.v[a] * x_a;
-      }
-      y.noalias() = G_.transpose() * q;
-    };
-    d_eta = solve_elevation(S_free, b_free, [&](const Vector& x, Vector& y) {
-      Vector c(N1);
-      carried(x, c);
-      y.noalias() = S_free * x;
-      for (int i = 0; i < N1; ++i)
-        if (!dirichlet[i]) y[i] -= c[i];
-    });
+    eliminate_elevation_boundaries(w);
+    const Eigen::Map<const SparseMatrix> system(N1, N1, S_.nonZeros(), S_.outerIndexPtr(),
+                                                S_.innerIndexPtr(), w.system_values.data());
+    d_eta = solve_elevation(S_, w.b_free,
+                            [&](const Vector& x, Vector& y) { y.noalias() = system * x; });
 
     // 4. Correction (M-23).
-    const Vector G_d_eta = G_ * d_eta;
+    w.G_d_eta.noalias() = G_ * d_eta;
     for (int a = 0; a < N2; ++a) {
-      const Vec2 correction =
-          th * g / A[a] * (P[a] * Vec2(G_d_eta[2 * a], G_d_eta[2 * a + 1]));  // [m/s]
-      const Vec2 u_new = P_after[a] * Vec2(next.u[a] - correction.x(), next.v[a] - correction.y());
-      next.u[a] = u_new.x();
-      next.v[a] = u_new.y();
+      const Vec2 G_d_eta_a(w.G_d_eta[2 * a], w.G_d_eta[2 * a + 1]);
+      const Mat2* P_a = w.P.of(a);
+      const Vec2 correction = th * g / A[a] * (P_a ? Vec2(*P_a * G_d_eta_a) : G_d_eta_a);  // [m/s]
+      const Vec2 u_new(next.u[a] - correction.x(), next.v[a] - correction.y());
+      const Mat2* P_after = w.P_after.of(a);
+      next.u[a] = P_after ? (*P_after * u_new).x() : u_new.x();
+      next.v[a] = P_after ? (*P_after * u_new).y() : u_new.y();
     }
     for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
     next.time = it.t_new;
@@ -619,13 +663,15 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
 
     // Water balance (water_balance.hpp): open boundaries (10), and the elevation boundaries'
     // rows of (M-22) as assembled, (S - C) d_eta - b, the outflow through each such vertex.
-    Vector residual(N1);  // [m^3/s]
-    carried(d_eta, residual);
-    residual = S * d_eta - residual - b;
     WaterBalance& balance = s.balance_;
     balance.group_rate = open_flux;
-    for (size_t k = 0; k < s.bc_.elevation_nodes.size(); ++k)
-      balance.group_rate[s.elevation_group_[k]] -= residual[s.bc_.elevation_nodes[k].vertex];
+    for (size_t k = 0; k < s.bc_.elevation_nodes.size(); ++k) {
+      const int i = s.bc_.elevation_nodes[k].vertex;
+      double flow_in = 0.0;  // [m^3/s] row i of S - C (kept before the elimination) times d_eta
+      for (int p = w.row_start[i]; p < w.row_start[i + 1]; ++p)
+        flow_in += w.row_value[p] * d_eta[w.row_column[p]];
+      balance.group_rate[s.elevation_group_[k]] -= flow_in - b[i];
+    }
   } catch (const RunError&) {
     s.state_ = s.previous_;
     throw;
@@ -635,6 +681,53 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
   StepReport report;
   report.iterations = 1;
   return report;
+}
+
+// The system S - C with the rows and columns of the elevation boundaries' vertices
+// (w.dirichlet) replaced by the identity's in S_ and w.system_values, their known d_eta moved to
+// the right-hand side (w.b_free from w.b); C keeps its columns there (C x takes their d_eta as
+// x). The rows of S - C there are kept first (w.row_*: the water balance's).
+void SegregatedStep::eliminate_elevation_boundaries(Work& w) {
+  const int N1 = mesh_.vertex_count;
+  const int* outer = S_.outerIndexPtr();
+  const int* index = S_.innerIndexPtr();
+  double* S = S_.valuePtr();
+  const double* C = w.carried_values.data();
+  const auto at = [&](int i, int j) {  // S_'s position of (i, j), in the pattern
+    return static_cast<int>(std::lower_bound(index + outer[j], index + outer[j + 1], i) - index);
+  };
+  w.b_free = w.b;
+  w.row_start.assign(N1 + 1, 0);
+  w.row_column.clear();
+  w.row_value.clear();
+  for (int i = 0; i < N1; ++i) {  // the rows, by the symmetric pattern's column i
+    if (w.dirichlet[i])
+      for (int p = outer[i]; p < outer[i + 1]; ++p) {
+        const int k = at(i, index[p]);
+        w.row_column.push_back(index[p]);
+        w.row_value.push_back(S[k] - C[k]);
+      }
+    w.row_start[i + 1] = static_cast<int>(w.row_column.size());
+  }
+  w.system_values.resize(S_.nonZeros());
+  for (int j = 0; j < N1; ++j) {
+    if (w.dirichlet[j])
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {  // column j: S's to the right-hand side
+        const int i = index[p];
+        if (!w.dirichlet[i]) w.b_free[i] -= S[p] * w.d_eta[j];
+        S[p] = i == j ? 1.0 : 0.0;
+      }
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      w.system_values[p] = w.dirichlet[index[p]] ? S[p] : S[p] - C[p];
+  }
+  for (int j = 0; j < N1; ++j) {
+    if (!w.dirichlet[j]) continue;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) {  // row j
+      const int k = at(j, index[p]);
+      S[k] = w.system_values[k] = index[p] == j ? 1.0 : 0.0;
+    }
+    w.b_free[j] = w.d_eta[j];
+  }
 }
 
 }  // namespace flotsam

@@ -27,9 +27,11 @@
 // slip nodes; zero at velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing
 // (7) is integrated in M_L's quadrature too. The momentum predictor is solved by conjugate
 // gradients preconditioned with its matrix's zero fill-in incomplete Cholesky factor, on the P2
-// nodes renumbered by locality (reverse Cuthill-McKee). The elevation system is solved by GMRES
-// preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part, refactorised when
-// GMRES needs more than max_extra_iterations beyond what it needed after the last factorisation.
+// nodes renumbered by locality (reverse Cuthill-McKee), u and v in one sweep
+// (pair_conjugate_gradients.hpp). C is assembled with S on S's pattern. The elevation system is
+// solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part,
+// refactorised when GMRES needs more than max_extra_iterations beyond what it needed after the
+// last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
@@ -40,6 +42,7 @@
 
 #include "core/vec.hpp"
 #include "flow/fem/incomplete_cholesky.hpp"
+#include "flow/fem/pair_conjugate_gradients.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
@@ -67,7 +70,38 @@ class SegregatedStep {
 
  private:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-  struct Loads;
+  using Vector = Eigen::VectorXd;
+  // Per-node momentum loads of one step [m^3 s^-2], the lumped friction [m^2/s], and the P1
+  // continuity source [m^3/s].
+  struct Loads {
+    std::vector<Vec2> force;      // (7) forcing, minus the explicit transposed viscous part of (4)
+    std::vector<double> gamma_m;  // sum over elements of m_a^e gamma_a: friction (5), lumped
+    Vector source;                // (11) (q_i, S)
+    std::vector<double> depth;    // H^n per node [m]
+    std::vector<double> speed, node_rate;  // |u^n| [m/s], the friction rate (5) [1/s] per node
+  };
+  // 2x2 matrices per node that are the identity at all but a few nodes (the constraints P_a).
+  struct NodeMatrices {
+    std::vector<int> at;  // per node: its entry of `matrix`, or -1 (the identity)
+    std::vector<int> nodes;
+    std::vector<Mat2> matrix;
+    void clear(int node_count);
+    void set(int node, const Mat2& m);
+    const Mat2* of(int node) const { return at[node] < 0 ? nullptr : &matrix[at[node]]; }
+  };
+  // The step's vectors, kept from one step to the next (no allocation per step).
+  struct Work {
+    Vector G_eta, A, flux, b, b_free, d_eta, G_d_eta;
+    std::vector<double> carried_values;  // C in S_'s pattern [m^2/s]
+    std::vector<double> system_values;   // S - C in S_'s pattern, eliminated [m^2/s]
+    std::vector<double> q_x, q_y;
+    NodeMatrices P, P_after;      // P_a, and the tangent applied after the correction (M-23)
+    std::vector<char> dirichlet;  // per vertex: on an elevation boundary
+    // S_'s rows of the elevation boundaries' vertices before their elimination, by vertex
+    std::vector<int> row_start, row_column;
+    std::vector<double> row_value;
+    Eigen::MatrixXd V, Z;  // GMRES's Krylov basis and its preconditioned vectors
+  };
   struct Prediction {              // what the momentum predictor (M-21) takes
     double theta, g, inv_dt;       // [-], [m s^-2], [1/s]
     const Eigen::VectorXd* G_eta;  // G eta^n [m^2], rows 2a + c
@@ -82,6 +116,7 @@ class SegregatedStep {
   void plan_schur_matrix(const SparseMatrix& M1);
   Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
                                   const Operator& apply);
+  void eliminate_elevation_boundaries(Work& w);
 
   const Mesh& mesh_;
   std::vector<double> m_;  // [m^2] lumped P2 mass per node
@@ -91,20 +126,31 @@ class SegregatedStep {
   SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
   std::vector<int> schur_position_;  // per node, per pair (i, j) of its vertices: S_'s value
   std::vector<int> m1_position_;     // M_1's entries in S_'s values
-  std::vector<double> m1_value_;     // [m^2]
+  // Per node a: where the vertices that a P1 field at a interpolates from (a itself, or a mid
+  // node's two ends; -1: none) are among its row's of G (C's columns).
+  std::vector<std::array<int, 2>> carried_local_;
+  std::vector<double> m1_value_;  // [m^2]
   // The momentum predictor (M-21) works on the P2 nodes renumbered by locality: node a is
   // unknown node_order_[a] of K_, of the factor and of the predictor's vectors.
   std::vector<int> node_order_;
   SparseMatrix K_;  // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s], reordered
   IncompleteCholesky predictor_factor_;  // of (M-21)'s matrix, each step
-  std::vector<int> k_position_;          // per element 36 positions in K_'s values
-  std::vector<double> k_geometry_;       // per element (grad N_a, grad N_b), b >= a: 21 [-]
+  struct Predictor {                     // (M-21)'s vectors, in K_'s order, kept across steps
+    std::vector<char> fixed;             // velocity nodes
+    Eigen::VectorXd A;                   // m_a/dt + gamma_a m_a [m^2/s]
+    std::vector<double> x, b;            // u (then u~) [m/s], right-hand side; entry 2 k + c
+    PairWorkspace work;
+  } predictor_;
+  std::vector<int> k_position_;     // per element 36 positions in K_'s values
+  std::vector<double> k_geometry_;  // per element (grad N_a, grad N_b), b >= a: 21 [-]
   double k_viscosity_ = std::numeric_limits<double>::quiet_NaN();  // K_'s constant nu [m^2/s]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none
   int fresh_iterations_ = 0;  // GMRES iterations of the solve that followed the factorisation
   long elevation_iterations_ = 0, factorisations_ = 0, momentum_iterations_ = 0;
+  Loads loads_;
+  Work work_;
 };
 
 }  // namespace flotsam
