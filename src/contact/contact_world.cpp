@@ -208,12 +208,22 @@ void ContactWorld::update_boxes(const BodySet& bodies) {
   const int n = bodies.size();
   reach_.resize(static_cast<std::size_t>(n), 0.0);  // zero unless step() grew it
   boxes_.resize(static_cast<std::size_t>(n));
-  for (const int i : in_step_) {
-    const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
+  rectangles_.resize(static_cast<std::size_t>(n));
+  const auto box = [&](int i) {  // one cos, sin per body: its footprint is kept for collide()
+    const Rectangle r = body_rectangle(bodies, i);
+    const Vec2 u = r.frame.axis, h = r.half;
     const double grow = margin_ * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
                       std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y() + grow);
     boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
+    rectangles_[i] = r;
+  };
+  const int count = static_cast<int>(in_step_.size());
+  if (count >= parallel_pairs) {
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < count; ++k) box(in_step_[static_cast<std::size_t>(k)]);
+  } else {
+    for (const int i : in_step_) box(i);
   }
 }
 
@@ -258,9 +268,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   }
   index_previous(bodies.size());
   // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
-  // contacts on any number of threads. Each footprint is built once (one cos, sin per body).
-  rectangles_.resize(boxes_.size());
-  for (const int i : in_step_) rectangles_[i] = body_rectangle(bodies, i);
+  // contacts on any number of threads.
   const int body_pairs = static_cast<int>(body_pairs_.size());
   const int wall_pairs = static_cast<int>(wall_pairs_.size());
   manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
@@ -295,11 +303,15 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   }
   const std::vector<int>& destination = islands_.number(ends_, bodies.size());
   const int count = static_cast<int>(kept_.size());
+  source_.resize(kept_.size());
+  for (int m = 0; m < count; ++m) source_[static_cast<std::size_t>(destination[m])] = m;
   contacts_.resize(kept_.size());  // every one overwritten below
-  auto build = [&](int m) {        // returns the points warm-started
-    const int k = kept_[static_cast<std::size_t>(m)];
+  // Contact d of the new order, from the pair's manifold; `hint` follows the last contacts
+  // matched (warm_start()). Returns the points warm-started.
+  auto build = [&](int d, int& hint) {
+    const int k = kept_[static_cast<std::size_t>(source_[static_cast<std::size_t>(d)])];
     const Manifold& manifold = manifolds_[static_cast<std::size_t>(k)];
-    ContactConstraint& c = contacts_[static_cast<std::size_t>(destination[m])];
+    ContactConstraint& c = contacts_[static_cast<std::size_t>(d)];
     if (k < body_pairs) {
       const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
       const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
@@ -316,19 +328,24 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
       p.r_a = p.r_a - bodies.position[c.a];
       p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
     }
-    return warm_start(c, destination[m]);
+    return warm_start(c, hint);
   };
   int points = 0, warm_started = 0;
   if (count >= parallel_pairs) {
-#pragma omp parallel for schedule(static) reduction(+ : points, warm_started)
-    for (int m = 0; m < count; ++m) {
-      points += manifolds_[static_cast<std::size_t>(kept_[m])].point_count;
-      warm_started += build(m);
+#pragma omp parallel reduction(+ : points, warm_started)
+    {
+      int hint = 0;  // each thread's block of contacts in order (schedule static)
+#pragma omp for schedule(static)
+      for (int d = 0; d < count; ++d) {
+        warm_started += build(d, hint);
+        points += contacts_[static_cast<std::size_t>(d)].point_count;
+      }
     }
   } else {
-    for (int m = 0; m < count; ++m) {
-      points += manifolds_[static_cast<std::size_t>(kept_[m])].point_count;
-      warm_started += build(m);
+    int hint = 0;
+    for (int d = 0; d < count; ++d) {
+      warm_started += build(d, hint);
+      points += contacts_[static_cast<std::size_t>(d)].point_count;
     }
   }
   profile_.contacts = count;
@@ -361,16 +378,18 @@ void ContactWorld::index_previous(int body_count) {
 // "incident vertex" and "clipped at the side plane" from one interval to the next; losing its
 // impulse then throws the load of the whole jam behind it onto the next sweeps. A point that
 // carried an impulse is resting: restitution is not applied to it again. Returns the points
-// warm-started; `hint` is where the contact stands in contacts_.
-int ContactWorld::warm_start(ContactConstraint& c, int hint) const {
-  // The pairs come in nearly the same order from step to step: the last contact at the same
-  // place is tried first (a pair has one contact, so whichever is found is the one).
-  const bool same = hint < static_cast<int>(previous_.size()) && previous_[hint].a == c.a &&
+// warm-started; `hint` is the index in previous_ after the last one matched (updated).
+int ContactWorld::warm_start(ContactConstraint& c, int& hint) const {
+  // The contacts come in nearly the same order from step to step: the one after the last one
+  // matched is tried first (a pair has one contact, so whichever is found is the one), and last
+  // step's are read one after another.
+  const bool next = hint < static_cast<int>(previous_.size()) && previous_[hint].a == c.a &&
                     previous_key_[hint] == std::pair(c.b, c.segment);
-  int found = same ? hint : first_previous_[c.a];
+  int found = next ? hint : first_previous_[c.a];
   while (found >= 0 && previous_key_[found] != std::pair(c.b, c.segment))
     found = next_previous_[found];
   if (found < 0) return 0;
+  hint = found + 1;
   const ContactConstraint* it = &previous_[static_cast<std::size_t>(found)];
   std::array<bool, 2> used{false, false};
   std::array<int, 2> match{-1, -1};

@@ -102,7 +102,7 @@ class ContactWorld {
   void find_interval_start(const BodySet& bodies);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
   void index_previous(int body_count);
-  int warm_start(ContactConstraint& c, int hint) const;
+  int warm_start(ContactConstraint& c, int& hint) const;
   void solve(BodySet& bodies);
   bool grow_reach(const BodySet& bodies);
   void correct_positions(BodySet& bodies);
@@ -112,7 +112,7 @@ class ContactWorld {
   BroadPhase broad_phase_ = BroadPhase::sweep_and_prune;
   SweepAndPrune sweep_;
   std::vector<Aabb> boxes_;
-  std::vector<Rectangle> rectangles_;  // footprints of this detection
+  std::vector<Rectangle> rectangles_;  // footprints of this detection (update_boxes())
   std::vector<Manifold> manifolds_;    // of the body pairs, then of the wall pairs
   std::vector<char> active_;           // 1 for the bodies of this step (in_step_)
   std::vector<int> in_step_;           // this step's bodies, ascending (select())
@@ -124,6 +124,7 @@ class ContactWorld {
   std::vector<std::pair<int, int>> previous_key_;
   std::vector<int> kept_;                  // the pairs (body pairs, then wall pairs) with a contact
   std::vector<BodyPair> ends_;             // their bodies (b = -1: a wall)
+  std::vector<int> source_;                // contacts_[d] is of the pair kept_[source_[d]]
   std::vector<ContactConstraint> others_;  // contacts of the bodies outside this step's group
   ContactPlanner planner_;
   std::unique_ptr<ContactSolver> solver_;  // by config_.solver
