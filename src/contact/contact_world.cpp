@@ -272,6 +272,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   const int body_pairs = static_cast<int>(body_pairs_.size());
   const int wall_pairs = static_cast<int>(wall_pairs_.size());
   manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
+  touching_.resize(manifolds_.size());
   auto collide_pair = [&](int k) {
     if (k < body_pairs) {
       const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
@@ -285,6 +286,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
           collide_rectangle_segment(rectangles_[i], walls.start[s], walls.end[s], walls.normal[s],
                                     margin_ * slop + reach_[i], 0.1 * slop);
     }
+    touching_[k] = manifolds_[k].point_count > 0;
   };
   const int pairs = body_pairs + wall_pairs;
   if (pairs >= parallel_pairs) {
@@ -296,7 +298,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   // The pairs that touch, body pairs then wall pairs, and their islands.
   kept_.clear(), ends_.clear();
   for (int k = 0; k < pairs; ++k) {
-    if (manifolds_[static_cast<std::size_t>(k)].point_count == 0) continue;
+    if (!touching_[static_cast<std::size_t>(k)]) continue;
     kept_.push_back(k);
     ends_.push_back(k < body_pairs ? body_pairs_[static_cast<std::size_t>(k)]
                                    : BodyPair(wall_pairs_[k - body_pairs].first, -1));

@@ -122,6 +122,7 @@ class ContactWorld {
   // previous_ by body A (index_previous()): a list per body, and each one's (b, segment).
   std::vector<int> first_previous_, next_previous_;
   std::vector<std::pair<int, int>> previous_key_;
+  std::vector<char> touching_;             // 1 for a pair whose manifold has points
   std::vector<int> kept_;                  // the pairs (body pairs, then wall pairs) with a contact
   std::vector<BodyPair> ends_;             // their bodies (b = -1: a wall)
   std::vector<int> source_;                // contacts_[d] is of the pair kept_[source_[d]]

@@ -71,16 +71,24 @@ void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector
   }
 
   const std::size_t count = order_.size();
+  constexpr std::size_t parallel_boxes = 2000;  // [-] threads pay off from a few thousand
+  const bool parallel = count >= parallel_boxes && omp_get_max_threads() > 1;
   lower_.resize(count), upper_.resize(count), other_lower_.resize(count),
       other_upper_.resize(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    const Aabb& b = boxes[order_[k]];
+  const auto copy_bounds = [&](long k) {
+    const Aabb& b = boxes[order_[static_cast<std::size_t>(k)]];
     lower_[k] = b.lower[axis], upper_[k] = b.upper[axis];
     other_lower_[k] = b.lower[other], other_upper_[k] = b.upper[other];
+  };
+  const auto bounds = static_cast<long>(count);
+  if (parallel) {
+#pragma omp parallel for schedule(static)
+    for (long k = 0; k < bounds; ++k) copy_bounds(k);
+  } else {  // no parallel region: it costs about a microsecond even on one thread
+    for (long k = 0; k < bounds; ++k) copy_bounds(k);
   }
   // The sweep in parallel: each thread sweeps a run of the order into its own list, and the
   // lists join in the order's order, the same pairs in the same order on any number of threads.
-  constexpr std::size_t parallel_boxes = 2000;  // [-] threads pay off from a few thousand
   const double *lower = lower_.data(), *upper = upper_.data();  // local: not reloaded per test
   const double *other_lower = other_lower_.data(), *other_upper = other_upper_.data();
   const int* order = order_.data();
@@ -95,7 +103,7 @@ void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector
       }
     }
   };
-  if (count < parallel_boxes || omp_get_max_threads() == 1) {
+  if (!parallel) {
     sweep(0, count, pairs);
     return;
   }
