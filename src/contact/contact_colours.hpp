@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contact/impulse_solver.hpp"
+#include "contact/sweep_and_prune.hpp"
 
 namespace flotsam {
 
@@ -18,6 +19,8 @@ class ContactColours {
 
   /// movable[i] = 0 for a body that the contacts cannot move (1/m = 1/I = 0).
   void assign(std::span<const ContactConstraint> contacts, const std::vector<char>& movable);
+  /// The same for contacts given by their bodies alone, ends[m] = (a, b), b = -1 for a wall.
+  void assign(std::span<const BodyPair> ends, const std::vector<char>& movable);
 
   /// Colours in use, then the overflow as the last group (possibly empty).
   int groups() const { return static_cast<int>(start_.size()) - 1; }
@@ -29,6 +32,7 @@ class ContactColours {
  private:
   std::vector<std::uint64_t> used_;  // per body: the colours its contacts have
   std::vector<int> colour_of_, order_, start_;
+  std::vector<BodyPair> ends_;
 };
 
 }  // namespace flotsam

@@ -10,6 +10,8 @@
 namespace flotsam {
 namespace {
 
+constexpr int parallel_pairs = 2000;  // [-] threads pay off from a few thousand
+
 class Stopwatch {
  public:
   double lap() {  // [s] since the last lap
@@ -206,12 +208,22 @@ void ContactWorld::update_boxes(const BodySet& bodies) {
   const int n = bodies.size();
   reach_.resize(static_cast<std::size_t>(n), 0.0);  // zero unless step() grew it
   boxes_.resize(static_cast<std::size_t>(n));
-  for (const int i : in_step_) {
-    const Vec2 u = bodies.axis(i), h = bodies.half_extents(i);
+  rectangles_.resize(static_cast<std::size_t>(n));
+  const auto box = [&](int i) {  // one cos, sin per body: its footprint is kept for collide()
+    const Rectangle r = body_rectangle(bodies, i);
+    const Vec2 u = r.frame.axis, h = r.half;
     const double grow = margin_ * config_.allowed_overlap * bodies.width[i] + reach_[i];  // [m]
     const Vec2 extent(std::abs(u.x()) * h.x() + std::abs(u.y()) * h.y() + grow,
                       std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y() + grow);
     boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
+    rectangles_[i] = r;
+  };
+  const int count = static_cast<int>(in_step_.size());
+  if (count >= parallel_pairs) {
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < count; ++k) box(in_step_[static_cast<std::size_t>(k)]);
+  } else {
+    for (const int i : in_step_) box(i);
   }
 }
 
@@ -240,28 +252,27 @@ void ContactWorld::find_pairs(const BoundarySegments& walls) {
 }
 
 // The last contacts of this step's bodies become previous_ (for the warm start); those of the
-// other bodies are set aside in others_ and put back after the solve.
+// other bodies are set aside in others_ and put back after the solve. The new contacts are built
+// in parallel straight into their islands' order (islands.hpp), each matched to its pair's last
+// contact (warm_start()): nothing is sorted, and no contact is moved after it is built.
 void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls) {
-  previous_.clear();
-  others_.clear();
-  for (ContactConstraint& c : contacts_)
-    (active_[c.a] || (c.b >= 0 && active_[c.b]) ? previous_ : others_).push_back(std::move(c));
-  contacts_.clear();
-  auto relative = [&](ContactConstraint& c) {
-    for (int k = 0; k < c.point_count; ++k) {
-      auto& p = c.points[static_cast<std::size_t>(k)];
-      p.r_a = p.r_a - bodies.position[c.a];
-      p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
-    }
+  const auto of_step = [&](const ContactConstraint& c) {
+    return active_[c.a] || (c.b >= 0 && active_[c.b]);
   };
+  others_.clear();
+  if (std::all_of(contacts_.begin(), contacts_.end(), of_step)) {
+    previous_.swap(contacts_);  // all of them (one group, the whole set): no copy
+  } else {
+    previous_.clear();
+    for (ContactConstraint& c : contacts_) (of_step(c) ? previous_ : others_).push_back(c);
+  }
+  index_previous(bodies.size());
   // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
-  // contacts on any number of threads. Each footprint is built once (one cos, sin per body).
-  rectangles_.resize(boxes_.size());
-  for (const int i : in_step_) rectangles_[i] = body_rectangle(bodies, i);
-  constexpr std::size_t parallel_pairs = 2000;  // [-] threads pay off from a few thousand
+  // contacts on any number of threads.
   const int body_pairs = static_cast<int>(body_pairs_.size());
   const int wall_pairs = static_cast<int>(wall_pairs_.size());
   manifolds_.resize(static_cast<std::size_t>(body_pairs + wall_pairs));
+  touching_.resize(manifolds_.size());
   auto collide_pair = [&](int k) {
     if (k < body_pairs) {
       const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
@@ -275,113 +286,151 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
           collide_rectangle_segment(rectangles_[i], walls.start[s], walls.end[s], walls.normal[s],
                                     margin_ * slop + reach_[i], 0.1 * slop);
     }
+    touching_[k] = manifolds_[k].point_count > 0;
   };
   const int pairs = body_pairs + wall_pairs;
-  if (manifolds_.size() >= parallel_pairs) {
+  if (pairs >= parallel_pairs) {
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < pairs; ++k) collide_pair(k);
   } else {  // no parallel region: it costs about a microsecond even on one thread
     for (int k = 0; k < pairs; ++k) collide_pair(k);
   }
-  for (int k = 0; k < body_pairs; ++k) {
-    const Manifold& m = manifolds_[static_cast<std::size_t>(k)];
-    if (m.point_count == 0) continue;
-    const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
-    const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
-    const double slop = config_.allowed_overlap * width;              // [m]
-    contacts_.push_back(make_constraint(m, i, j, -1, config_.friction, slop, width));
-    relative(contacts_.back());
+  // The pairs that touch, body pairs then wall pairs, and their islands.
+  kept_.clear(), ends_.clear();
+  for (int k = 0; k < pairs; ++k) {
+    if (!touching_[static_cast<std::size_t>(k)]) continue;
+    kept_.push_back(k);
+    ends_.push_back(k < body_pairs ? body_pairs_[static_cast<std::size_t>(k)]
+                                   : BodyPair(wall_pairs_[k - body_pairs].first, -1));
   }
-  for (int k = 0; k < wall_pairs; ++k) {
-    const Manifold& m = manifolds_[static_cast<std::size_t>(body_pairs + k)];
-    if (m.point_count == 0) continue;
-    const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k)];
-    const double slop = config_.allowed_overlap * bodies.width[i];  // [m]
-    contacts_.push_back(make_constraint(m, i, -1, s, config_.friction, slop, bodies.width[i]));
-    relative(contacts_.back());
+  const std::vector<int>& destination = islands_.number(ends_, bodies.size());
+  const int count = static_cast<int>(kept_.size());
+  source_.resize(kept_.size());
+  for (int m = 0; m < count; ++m) source_[static_cast<std::size_t>(destination[m])] = m;
+  contacts_.resize(kept_.size());  // every one overwritten below
+  // Contact d of the new order, from the pair's manifold; `hint` follows the last contacts
+  // matched (warm_start()). Returns the points warm-started.
+  auto build = [&](int d, int& hint) {
+    const int k = kept_[static_cast<std::size_t>(source_[static_cast<std::size_t>(d)])];
+    const Manifold& manifold = manifolds_[static_cast<std::size_t>(k)];
+    ContactConstraint& c = contacts_[static_cast<std::size_t>(d)];
+    if (k < body_pairs) {
+      const auto [i, j] = body_pairs_[static_cast<std::size_t>(k)];
+      const double width = std::min(bodies.width[i], bodies.width[j]);  // [m]
+      c = make_constraint(manifold, i, j, -1, config_.friction, config_.allowed_overlap * width,
+                          width);
+    } else {
+      const auto [i, s] = wall_pairs_[static_cast<std::size_t>(k - body_pairs)];
+      const double width = bodies.width[i];  // [m]
+      c = make_constraint(manifold, i, -1, s, config_.friction, config_.allowed_overlap * width,
+                          width);
+    }
+    for (int q = 0; q < c.point_count; ++q) {
+      auto& p = c.points[static_cast<std::size_t>(q)];
+      p.r_a = p.r_a - bodies.position[c.a];
+      p.r_b = c.b >= 0 ? Vec2(p.r_b - bodies.position[c.b]) : Vec2::Zero();
+    }
+    return warm_start(c, hint);
+  };
+  int points = 0, warm_started = 0;
+  if (count >= parallel_pairs) {
+#pragma omp parallel reduction(+ : points, warm_started)
+    {
+      int hint = 0;  // each thread's block of contacts in order (schedule static)
+#pragma omp for schedule(static)
+      for (int d = 0; d < count; ++d) {
+        warm_started += build(d, hint);
+        points += contacts_[static_cast<std::size_t>(d)].point_count;
+      }
+    }
+  } else {
+    int hint = 0;
+    for (int d = 0; d < count; ++d) {
+      warm_started += build(d, hint);
+      points += contacts_[static_cast<std::size_t>(d)].point_count;
+    }
   }
-  profile_.contacts = static_cast<int>(contacts_.size());
+  profile_.contacts = count;
+  profile_.points = points;
+  profile_.warm_started_points = warm_started;
+}
+
+// previous_ listed by body A: first_previous_[a], then next_previous_[m], in ascending order.
+// Only the entries of the step's bodies and of previous_'s are written: a small group's step
+// costs its own size.
+void ContactWorld::index_previous(int body_count) {
+  first_previous_.resize(static_cast<std::size_t>(body_count), -1);
+  for (const int i : in_step_) first_previous_[i] = -1;
+  for (const ContactConstraint& c : previous_) first_previous_[c.a] = -1;
+  next_previous_.resize(previous_.size());
+  previous_key_.resize(previous_.size());
+  for (int m = static_cast<int>(previous_.size()) - 1; m >= 0; --m) {
+    const ContactConstraint& c = previous_[static_cast<std::size_t>(m)];
+    previous_key_[m] = {c.b, c.segment};
+    next_previous_[m] = first_previous_[c.a];
+    first_previous_[c.a] = m;
+  }
 }
 
 // Last interval's accumulated impulses seed this one's (warm start): a resting jam then needs
-// few sweeps. Manifolds are matched by (a, b, segment), their points by feature, else by
-// position: the nearest old point within a tenth of the thinner width (measured as r_A, which
-// moves by at most l/4 per interval). The feature alone is not enough: when two logs of equal
-// length lie side by side with their ends aligned, an end point flips between "incident vertex"
-// and "clipped at the side plane" from one interval to the next; losing its impulse then throws
-// the load of the whole jam behind it onto the next sweeps. A point that carried an impulse is
-// resting: restitution is not applied to it again.
-void ContactWorld::match_previous_points() {
-  auto key = [](const ContactConstraint& c) { return std::tuple(c.a, c.b, c.segment); };
-  using Key = decltype(key(ContactConstraint{}));
-  previous_keys_.clear();  // sorted (key, index): the contacts themselves are large to move
-  for (std::size_t m = 0; m < previous_.size(); ++m)
-    previous_keys_.emplace_back(key(previous_[m]), static_cast<int>(m));
-  std::sort(previous_keys_.begin(), previous_keys_.end());
-  // Each contact looks up its own: in parallel, the same on any number of threads.
-  int points = 0, warm_started = 0;
-  const int count = static_cast<int>(contacts_.size());
-  auto warm_start = [&](int m) {  // the points of contact m warm-started
-    ContactConstraint& c = contacts_[static_cast<std::size_t>(m)];
-    int warm = 0;
-    const auto found = std::lower_bound(previous_keys_.begin(), previous_keys_.end(), key(c),
-                                        [](const auto& x, const Key& k) { return x.first < k; });
-    if (found == previous_keys_.end() || found->first != key(c)) return 0;
-    const ContactConstraint* it = &previous_[static_cast<std::size_t>(found->second)];
-    std::array<bool, 2> used{false, false};
-    std::array<int, 2> match{-1, -1};
-    for (int k = 0; k < c.point_count; ++k) {
-      for (int q = 0; q < it->point_count; ++q) {
-        if (!used[q] && it->points[q].feature == c.points[k].feature) {
-          match[k] = q, used[q] = true;
-          break;
-        }
+// few sweeps. A contact is matched to the last one of its pair (a, b, segment), its points by
+// feature, else by position: the nearest old point within a tenth of the thinner width (measured
+// as r_A, which moves by at most l/4 per interval). The feature alone is not enough: when two
+// logs of equal length lie side by side with their ends aligned, an end point flips between
+// "incident vertex" and "clipped at the side plane" from one interval to the next; losing its
+// impulse then throws the load of the whole jam behind it onto the next sweeps. A point that
+// carried an impulse is resting: restitution is not applied to it again. Returns the points
+// warm-started; `hint` is the index in previous_ after the last one matched (updated).
+int ContactWorld::warm_start(ContactConstraint& c, int& hint) const {
+  // The contacts come in nearly the same order from step to step: the one after the last one
+  // matched is tried first (a pair has one contact, so whichever is found is the one), and last
+  // step's are read one after another.
+  const bool next = hint < static_cast<int>(previous_.size()) && previous_[hint].a == c.a &&
+                    previous_key_[hint] == std::pair(c.b, c.segment);
+  int found = next ? hint : first_previous_[c.a];
+  while (found >= 0 && previous_key_[found] != std::pair(c.b, c.segment))
+    found = next_previous_[found];
+  if (found < 0) return 0;
+  hint = found + 1;
+  const ContactConstraint* it = &previous_[static_cast<std::size_t>(found)];
+  std::array<bool, 2> used{false, false};
+  std::array<int, 2> match{-1, -1};
+  for (int k = 0; k < c.point_count; ++k) {
+    for (int q = 0; q < it->point_count; ++q) {
+      if (!used[q] && it->points[q].feature == c.points[k].feature) {
+        match[k] = q, used[q] = true;
+        break;
       }
-    }
-    const double tolerance = 0.1 * c.width;  // [m]
-    for (int k = 0; k < c.point_count; ++k) {
-      double nearest = tolerance;  // [m]
-      for (int q = 0; q < it->point_count && match[k] < 0; ++q) {
-        const double d = (it->points[q].r_a - c.points[k].r_a).norm();
-        if (!used[q] && d <= nearest) nearest = d, match[k] = q;
-      }
-      if (match[k] >= 0) used[match[k]] = true;
-    }
-    for (int k = 0; k < c.point_count; ++k) {
-      if (match[k] < 0) continue;
-      ContactPointConstraint& p = c.points[k];
-      const ContactPointConstraint& old = it->points[match[k]];
-      p.normal_impulse = old.normal_impulse;
-      p.tangent_impulse = old.tangent_impulse;
-      p.first_impulse = old.first_impulse;
-      p.last_impulse = old.last_impulse;
-      p.resting = old.normal_impulse > 0.0;
-      ++warm;
-    }
-    return warm;
-  };
-  if (count >= 2000) {
-#pragma omp parallel for schedule(static) reduction(+ : points, warm_started)
-    for (int m = 0; m < count; ++m) {
-      points += contacts_[static_cast<std::size_t>(m)].point_count;
-      warm_started += warm_start(m);
-    }
-  } else {
-    for (int m = 0; m < count; ++m) {
-      points += contacts_[static_cast<std::size_t>(m)].point_count;
-      warm_started += warm_start(m);
     }
   }
-  profile_.points = points;
-  profile_.warm_started_points = warm_started;
+  const double tolerance = 0.1 * c.width;  // [m]
+  for (int k = 0; k < c.point_count; ++k) {
+    double nearest = tolerance;  // [m]
+    for (int q = 0; q < it->point_count && match[k] < 0; ++q) {
+      const double d = (it->points[q].r_a - c.points[k].r_a).norm();
+      if (!used[q] && d <= nearest) nearest = d, match[k] = q;
+    }
+    if (match[k] >= 0) used[match[k]] = true;
+  }
+  int warm = 0;
+  for (int k = 0; k < c.point_count; ++k) {
+    if (match[k] < 0) continue;
+    ContactPointConstraint& p = c.points[k];
+    const ContactPointConstraint& old = it->points[match[k]];
+    p.normal_impulse = old.normal_impulse;
+    p.tangent_impulse = old.tangent_impulse;
+    p.first_impulse = old.first_impulse;
+    p.last_impulse = old.last_impulse;
+    p.resting = old.normal_impulse > 0.0;
+    ++warm;
+  }
+  return warm;
 }
 
 // The solver (contact_solver.hpp) changes the velocities and moves the poses over the interval.
 void ContactWorld::solve(BodySet& bodies) {
   Stopwatch clock;
   set_solver_masses(masses_, bodies, config_, added_mass_coefficient_, in_step_);
-  match_previous_points();
-  islands_.group(contacts_, bodies.size());
   profile_.sleeping_islands = sleep_.set_aside(contacts_, islands_, resting_, bodies);
   profile_.sleeping_contacts = static_cast<int>(resting_.size());
   if (profile_.sleeping_islands > 0) islands_.group(contacts_, bodies.size());

@@ -3,11 +3,12 @@
 // bodies that may touch (contact_planner.hpp); then, after each contact interval of a group, one
 // call of step() reads as the pipeline
 //
-//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase) -> solve (islands,
-//   impulses) -> correct_positions
+//   update_boxes -> find_pairs (broad phase) -> collide (narrow phase, islands, warm start)
+//   -> solve (impulses) -> correct_positions
 //
 // each stage timed into ContactProfile, as Box2D's b2World_Step. The world keeps what makes the
-// next step cheap: the sweep order, and last step's impulses to warm-start the solver.
+// next step cheap: the sweep order, and last step's contacts, indexed by body, to warm-start the
+// solver (each new contact takes the impulses of its pair's last contact).
 // Bodies whose state is `gone` take no part.
 #include <memory>
 #include <tuple>
@@ -100,7 +101,8 @@ class ContactWorld {
   void find_pairs(const BoundarySegments& walls);
   void find_interval_start(const BodySet& bodies);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
-  void match_previous_points();
+  void index_previous(int body_count);
+  int warm_start(ContactConstraint& c, int& hint) const;
   void solve(BodySet& bodies);
   bool grow_reach(const BodySet& bodies);
   void correct_positions(BodySet& bodies);
@@ -110,14 +112,20 @@ class ContactWorld {
   BroadPhase broad_phase_ = BroadPhase::sweep_and_prune;
   SweepAndPrune sweep_;
   std::vector<Aabb> boxes_;
-  std::vector<Rectangle> rectangles_;  // footprints of this detection
+  std::vector<Rectangle> rectangles_;  // footprints of this detection (update_boxes())
   std::vector<Manifold> manifolds_;    // of the body pairs, then of the wall pairs
   std::vector<char> active_;           // 1 for the bodies of this step (in_step_)
   std::vector<int> in_step_;           // this step's bodies, ascending (select())
   std::vector<BodyPair> body_pairs_;
   std::vector<std::pair<int, int>> wall_pairs_;  // (body, segment)
   std::vector<ContactConstraint> contacts_, previous_;
-  std::vector<std::pair<std::tuple<int, int, int>, int>> previous_keys_;  // (a, b, segment), index
+  // previous_ by body A (index_previous()): a list per body, and each one's (b, segment).
+  std::vector<int> first_previous_, next_previous_;
+  std::vector<std::pair<int, int>> previous_key_;
+  std::vector<char> touching_;             // 1 for a pair whose manifold has points
+  std::vector<int> kept_;                  // the pairs (body pairs, then wall pairs) with a contact
+  std::vector<BodyPair> ends_;             // their bodies (b = -1: a wall)
+  std::vector<int> source_;                // contacts_[d] is of the pair kept_[source_[d]]
   std::vector<ContactConstraint> others_;  // contacts of the bodies outside this step's group
   ContactPlanner planner_;
   std::unique_ptr<ContactSolver> solver_;  // by config_.solver

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contact/impulse_solver.hpp"
+#include "contact/sweep_and_prune.hpp"
 
 namespace flotsam {
 
@@ -17,6 +18,10 @@ class Islands {
   /// Reorders `contacts` so that each island's contacts are contiguous: islands in the order of
   /// their first contact, and within an island the contacts in their old relative order.
   void group(std::vector<ContactConstraint>& contacts, int body_count);
+  /// The same islands for contacts given by their bodies alone, ends[m] = (a, b), b = -1 for a
+  /// wall, without moving them: returns each contact's index once grouped (island() then holds
+  /// for a vector in that order).
+  const std::vector<int>& number(std::span<const BodyPair> ends, int body_count);
 
   int count() const { return static_cast<int>(start_.size()) - 1; }
   /// Island k's contacts, after group() on the same vector.
@@ -33,6 +38,8 @@ class Islands {
 
   std::vector<int> parent_;  // union-find over bodies
   std::vector<int> island_of_root_, island_of_contact_, start_, next_, largest_first_;
+  std::vector<int> destination_;  // of each contact, once grouped
+  std::vector<BodyPair> ends_;
   std::vector<ContactConstraint> sorted_;
 };
 

@@ -344,7 +344,15 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   movable_.assign(slots, 0);
   for (int i = 0; i < n; ++i)
     movable_[i] = masses.inverse_mass[i] > 0.0 || masses.inverse_inertia[i] > 0.0;
-  colours_.assign(contacts, movable_);
+  // The contacts' bodies in a compact copy: the serial passes below read them in colour order.
+  const int contact_count = static_cast<int>(contacts.size());
+  ends_.resize(contacts.size());
+#pragma omp parallel for schedule(static) if (threads)
+  for (int m = 0; m < contact_count; ++m) {
+    const ContactConstraint& c = contacts[static_cast<std::size_t>(m)];
+    ends_[static_cast<std::size_t>(m)] = {c.a, c.b};
+  }
+  colours_.assign(ends_, movable_);
   const std::vector<int>& order = colours_.order();
   // Colour g's contacts fill its Wides lane after lane; the overflow's one to a Wide.
   const int groups = colours_.groups();
@@ -374,12 +382,12 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
   first_.assign(order.size(), 0);
   touched_.clear(), moving_.clear();
   for (std::size_t k = 0; k < order.size(); ++k) {
-    const ContactConstraint& src = contacts[static_cast<std::size_t>(order[k])];
-    for (const int i : {src.a, src.b}) {
+    const auto [a, b] = ends_[static_cast<std::size_t>(order[k])];
+    for (const int i : {a, b}) {
       if (i < 0 || seen_[i]) continue;
       seen_[i] = 1;
       touched_.push_back(i);
-      if (movable_[i]) moving_.push_back(i), first_[k] |= i == src.a ? 1 : 2;
+      if (movable_[i]) moving_.push_back(i), first_[k] |= i == a ? 1 : 2;
     }
   }
   const int touched = static_cast<int>(touched_.size()), moving = static_cast<int>(moving_.size());

@@ -141,6 +141,7 @@ class SoftStep final : public ContactSolver {
   std::vector<BodyStep> body_step_;
   std::vector<double> inverse_mass_, inverse_inertia_;
   std::vector<char> movable_, seen_;
+  std::vector<BodyPair> ends_;        // per contact: (a, b), b = -1 for a wall
   std::vector<unsigned char> first_;  // per contact in colour order: first of A (1), of B (2)
   std::vector<int> touched_;          // bodies in contact, in colour order of their first contact
   std::vector<int> moving_;           // the movable ones

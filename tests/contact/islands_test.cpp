@@ -129,5 +129,26 @@ TEST(Islands, AreHandedOutLargestFirst) {
   EXPECT_EQ(islands.largest(), 3);
 }
 
+// number() (the contact world's narrow phase builds its contacts straight into their islands'
+// order with it) puts each contact where group() moves it, from the contacts' bodies alone.
+TEST(Islands, NumberingByTheBodiesGivesTheOrderOfGroup) {
+  const int n = 400;
+  for (unsigned seed = 1; seed <= 50; ++seed) {
+    const std::vector<ContactConstraint> contacts = random_contacts(n, 3 + 7 * (seed % 13), seed);
+    std::vector<ContactConstraint> grouped = contacts;
+    Islands by_contacts, by_bodies;
+    by_contacts.group(grouped, n);
+    std::vector<BodyPair> ends;
+    for (const ContactConstraint& c : contacts) ends.emplace_back(c.a, c.b);
+    const std::vector<int> destination = by_bodies.number(ends, n);
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    ASSERT_EQ(by_bodies.count(), by_contacts.count());
+    ASSERT_EQ(by_bodies.largest_first(), by_contacts.largest_first());
+    ASSERT_EQ(destination.size(), contacts.size());
+    for (std::size_t m = 0; m < contacts.size(); ++m)  // the segment field numbers the contacts
+      EXPECT_EQ(grouped[static_cast<std::size_t>(destination[m])].segment, contacts[m].segment);
+  }
+}
+
 }  // namespace
 }  // namespace flotsam
