@@ -31,9 +31,9 @@ Supg supg_tau(double inv_dt, const Vec2& u, double nu, double gamma, double dgam
   return s;
 }
 
-// Eulerian = false: with characteristics, whose advection and the part s of the explicit slope
-// and Coriolis are in u_d; the terms of advection (2) and SUPG vanish and are not computed (a
-// third fewer operations), and (3) and (6) keep only their t^n part explicit_at_node.
+// Eulerian = false: with characteristics, whose advection and explicit slope and Coriolis are in
+// u_d; the terms of advection (2), SUPG and the explicit parts of (3) and (6) vanish and are not
+// computed (a third fewer operations).
 template <bool Eulerian>
 void assemble(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
               LocalMatrix& K, LocalVector& F) {
@@ -144,8 +144,6 @@ void assemble(const AssemblyParameters& p, const ElementValues& ev, const Elemen
         rhs += s_a * gamma * u_hat[c] * u_hat.dot(u_k);     // (5)
         rhs += s_a * force[c];                              // (7)
         rhs += s_a * depth_rate[c] * eta_k;                 // (5) (7)
-        if constexpr (!Eulerian)
-          rhs -= p.explicit_at_node * s_a * (g * grad_eta_n[c] + f * coriolis_n[c]);  // (3) (6)
         if constexpr (Eulerian) {
           rhs += th * s_a * advection_k[c] - (1 - th) * s_a * advection_n[c];  // (2)
           rhs -= (1 - th) * g * s_a * grad_eta_n[c];                           // (3)
@@ -189,7 +187,7 @@ void assemble_element(const AssemblyParameters& p, const ElementValues& ev, cons
 void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues& ev,
                                 const ElementState& s, std::array<Vec2, 6>& F) {
   F.fill(Vec2::Zero());
-  const double weight = 1.0 - p.theta - p.explicit_at_node;  // s, the part at the feet
+  const double weight = 1.0 - p.theta;
   for (int q = 0; q < triangle_point_count; ++q) {
     const auto& N = ev.N2[q];
     Vec2 u_n = Vec2::Zero(), grad_eta_n = Vec2::Zero();

@@ -68,14 +68,10 @@ struct AssemblyParameters {
   Vec2 wind_stress = Vec2::Zero();  // (rho_air/rho) C_w |W| W [m^2 s^-2]; F_wind = this / H
   FrictionModel friction;
   bool supg = true;
-  // Advection by characteristics (characteristics.hpp): terms (2) and SUPG and the part s of the
-  // t^n parts of (3) and (6) are left out, and the time term (1) starts from the departure values
-  // u_d instead of u^n (they hold that part, at the departure point).
+  // Advection by characteristics (characteristics.hpp): terms (2) and SUPG and the explicit
+  // parts of (3) and (6) are left out, and the time term (1) starts from the departure values
+  // u_d instead of u^n (they hold those explicit parts, at the departure point).
   bool characteristics = false;
-  // With characteristics, the part of the t^n terms g grad eta^n + f k x u^n of (3) and (6)
-  // taken at the arriving node, 1 - theta - s (negative when s > 1 - theta); the feet take
-  // s = slope_at_feet(theta) (slope_at_feet.hpp). 0: all of the explicit part at the feet. [-]
-  double explicit_at_node = 0.0;
   double source_time = 0.0;  // t^{n+theta} [s], where the source function is evaluated
   const SourceFunction* source = nullptr;
 };
@@ -98,13 +94,12 @@ struct ElementState {
 void assemble_element(const AssemblyParameters& p, const ElementValues& ev, const ElementState& s,
                       LocalMatrix& K, LocalVector& F);
 
-/// With characteristics: the part of terms (3) and (6) at t^n taken at the feet, per local node a,
-///   F_a = -s (N_a, g grad eta^n + f k x u^n),  s = 1 - theta - explicit_at_node   [m^3 s^-2],
+/// With characteristics: the explicit parts of terms (3) and (6) at t^n, per local node a,
+///   F_a = -(1-theta) (N_a, g grad eta^n + f k x u^n)   [m^3 s^-2],
 /// whose L2 projection onto P2 is the explicit acceleration that the characteristics carry to
-/// the departure point (assemble_element takes the rest, explicit_at_node, at the node). The
-/// viscous term (4) stays at the arrival point: its weak form, by parts, has no pointwise
-/// projection at the boundary (the projection would put the wall's shear stress into the boundary
-/// nodes).
+/// the departure point (assemble_element then leaves these parts out). The viscous term (4)
+/// stays at the arrival point: its weak form, by parts, has no pointwise projection at the
+/// boundary (the projection would put the wall's shear stress into the boundary nodes).
 void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues& ev,
                                 const ElementState& s, std::array<Vec2, 6>& F);
 

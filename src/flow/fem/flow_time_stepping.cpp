@@ -94,14 +94,11 @@ ShallowWaterSolver::Iteration ShallowWaterSolver::time_step(double dt) const {
 // BDF2: u^n at the foot at t^n and u^{n-1} at the foot at t^{n-1}, on paths of the velocity
 // linear in time through u^{n-1} and u^n (extrapolated between t^n and t^{n+1}).
 //
-// The theta-scheme: the field u^n + dt a^n, where a^n is the part s = slope_at_feet(theta) of
-// the surface slope and Coriolis terms at t^n, -s (g grad eta^n + f k x u^n), projected on P2,
-// is carried along the paths of u^n to every node; the node takes the rest of the t^n part,
-// -(1 - theta - s) (...), and theta (...)^{n+1} (element_assembly.cpp, terms (3) and (6)). The
-// slope's integral along the path is then nearly centred in space: the steady state of the
-// scheme differs from the Eulerian one by (1/2 - s) dt g (u . grad) grad eta, (theta/2 - 1/4) dt
-// (...) instead of (theta - 1/2) dt (...) with all the explicit part at the feet (docs/model.md
-// "Why a part s = 3/4 - theta/2 of the slope at the feet").
+// The theta-scheme: the field u^n + dt a^n, where a^n is the explicit part of the surface slope
+// and Coriolis terms, -(1-theta) (g grad eta^n + f k x u^n), projected on P2, is carried along
+// the paths of u^n to every node. The explicit terms are then taken where the water was at t^n,
+// the departure point, rather than where it arrives: the steady state of the scheme then
+// differs from the Eulerian one by O((theta - 1/2) dt) instead of O(dt / 2).
 void ShallowWaterSolver::departure_values(const Iteration& it, double dt) {
   const FlowState& n = previous_;
   if (case_.time.scheme == TimeScheme::bdf2) {

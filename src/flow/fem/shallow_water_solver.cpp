@@ -7,7 +7,6 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "flow/fem/slope_at_feet.hpp"
 #include "flow/fem/turbulence.hpp"
 #include "flow/friction_map.hpp"
 
@@ -212,9 +211,6 @@ AssemblyParameters ShallowWaterSolver::assembly_parameters(const Iteration& it) 
   p.friction = FrictionModel::from(flow);
   p.supg = options_.supg;
   p.characteristics = it.characteristics;
-  // The theta-scheme's t^n slope and Coriolis: s at the feet, the rest at the node (BDF2 has none).
-  if (it.characteristics && case_.time.scheme == TimeScheme::theta)
-    p.explicit_at_node = 1.0 - it.theta - slope_at_feet(it.theta);
   p.source_time = it.t_source;
   p.source = options_.source ? &options_.source : nullptr;
   return p;
