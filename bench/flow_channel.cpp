@@ -7,7 +7,7 @@
 //   <build>/bench/bench_flow_channel unsteady DT [T_END] [mesh_size] [state_file] [viscosity]
 //   <build>/bench/bench_flow_channel compare STATE_A STATE_B
 //   <build>/bench/bench_flow_channel scaling MESH_SIZE STEPS [DT]
-//   <build>/bench/bench_flow_channel section STATE X
+//   <build>/bench/bench_flow_channel section STATE X [Y ...]
 //   <build>/bench/bench_flow_channel fv MESH_SIZE SECONDS
 //
 // steady: solve_steady from still water (at the case's viscosity, or the one given [m^2/s]; mesh
@@ -20,14 +20,14 @@
 // states of the same mesh. scaling: STEPS steps at DT (default 1 s) on the channel with far-field
 // size MESH_SIZE [m] (pier size and refinement distance scaled with it): time per step and peak
 // memory (getrusage ru_maxrss). section: eta, u, v of a saved state (of the case's own mesh) every
-// 5 m across the channel at x = X [m]. fv: the finite-volume engine on the scaling's mesh,
-// SECONDS s of flow after the first (advanced a second at a time): CPU time per simulated second
-// and per Courant sub-step, peak memory. OMP_NUM_THREADS sets the threads;
-// FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady), FLOTSAM_FLOW_SOLVER=klu KLU
-// instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept across solves as the
-// approximate inverse of an iterative refinement, or not (all modes; unset: FlowSolverOptions'
-// default), FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all modes but steady),
-// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
+// 5 m across the channel at x = X [m], or at the given Y [m] only (gauges). fv: the finite-volume
+// engine on the scaling's mesh, SECONDS s of flow after the first (advanced a second at a time):
+// CPU time per simulated second and per Courant sub-step, peak memory. OMP_NUM_THREADS sets the
+// threads; FLOTSAM_FLOW_ITERATIONS=n the Newton iterations per step (unsteady),
+// FLOTSAM_FLOW_SOLVER=klu KLU instead of UMFPACK (scaling), FLOTSAM_FLOW_REUSE_LU=1|0 the LU kept
+// across solves as the approximate inverse of an iterative refinement, or not (all modes; unset:
+// FlowSolverOptions' default), FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all
+// modes but steady), FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
 // FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (steady, unsteady;
 // unset: the case's), FLOTSAM_FLOW_TRACE=S a line every S seconds of simulated time with the
 // discharges and the fastest node (unsteady); every mode prints the linear solver's counts.
@@ -285,16 +285,19 @@ int run_compare(const std::string& a_file, const std::string& b_file) {
   return 0;
 }
 
-// eta, u and v of a saved state at 35 points every 5 m across the channel at x [m].
-int run_section(const std::string& file, double x) {
+// eta, u and v of a saved state at 35 points every 5 m across the channel at x [m], or at ys
+// [m] when given.
+int run_section(const std::string& file, double x, std::vector<double> ys) {
   const FlowState state = read_state(file);
   const Case c = paper_channel_case(0.0);
   const Mesh mesh = paper_channel_mesh(c);
   if (state.u.size() != static_cast<size_t>(mesh.node_count()))
     throw std::runtime_error(file + " is not a state of the case's own mesh");
   const PointLocator locator(mesh);
-  for (int k = 0; k <= 34; ++k) {
-    const double y = std::clamp(5.0 * k, 1e-6, c.mesh.channel.width - 1e-6);  // [m]
+  if (ys.empty())
+    for (int k = 0; k <= 34; ++k) ys.push_back(5.0 * k);
+  for (double y_k : ys) {
+    const double y = std::clamp(y_k, 1e-6, c.mesh.channel.width - 1e-6);  // [m]
     const Location at = locator.locate(Vec2(x, y));
     if (!at.inside) continue;
     const Vec2 u = interpolate_p2(mesh, at, state.u, state.v);
@@ -374,7 +377,11 @@ int main(int argc, char** argv) {
       return run_unsteady(number(1, 1.0), number(2, 3600.0), number(3, 0.0),
                           args.size() > 4 ? args[4] : "", number(5, 0.0));
     if (args.size() >= 3 && args[0] == "compare") return run_compare(args[1], args[2]);
-    if (args.size() >= 3 && args[0] == "section") return run_section(args[1], number(2, 20.0));
+    if (args.size() >= 3 && args[0] == "section") {
+      std::vector<double> ys;
+      for (size_t k = 3; k < args.size(); ++k) ys.push_back(number(k, 0.0));
+      return run_section(args[1], number(2, 20.0), ys);
+    }
     if (args.size() >= 3 && args[0] == "scaling")
       return run_scaling(number(1, 14.5), static_cast<int>(number(2, 10)), number(3, 1.0));
     if (args.size() >= 3 && args[0] == "fv")
