@@ -33,10 +33,9 @@ class FemFlowField final : public FlowField {
   /// Keeps a reference to `solver`, which must outlive the field.
   explicit FemFlowField(ShallowWaterSolver& solver);
 
-  /// Copies the solver's two states into the nodes' packs that sample_batch reads (in
-  /// parallel over the nodes). To be called whenever the solver's states change (FemEngine
-  /// does after each step, initialize, settle and restore); sample_batch refuses a pack that is
-  /// not of the states' times.
+  /// Copies the solver's two states into the nodes' packs that sample_batch reads. To be called
+  /// whenever the solver's states change (FemEngine does after each step, initialize, settle and
+  /// restore); sample_batch refuses a pack that is not of the states' times.
   void pack_states();
 
   FlowSample sample(const Vec2& p, double t, int& hint) const override;
