@@ -6,7 +6,10 @@
 // sample: 0 the analytic flow (uniform), 1 the FEM engine's, 2 the finite-volume engine's, both
 // on a structured channel mesh of 10 m triangles (5,100 elements) holding that flow after one
 // 1 s step from it, so that sampling (point location, interpolation in space and time) is
-// timed too.
+// timed too. Each iteration stands for a flow step: in the FEM's field it includes the copy of
+// the states into the elements' packs (FemFlowField::pack_states), which a run pays once per
+// flow step (the finite-volume field's copy of its states, FvFlowField::advance_to_state, is
+// part of the engine's step and not timed).
 //   cmake --build build --target bench_bodies_forces && build/bench/bench_bodies_forces
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -18,6 +21,7 @@
 #include "bodies/body_integrator.hpp"
 #include "core/constants.hpp"
 #include "coupling/flow_engines.hpp"
+#include "flow/fem/fem_flow_field.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
@@ -48,9 +52,10 @@ struct EngineFlow {
   Case flow_case;
   std::unique_ptr<FlowEngine> engine;
 
-  explicit EngineFlow(FlowEngineKind kind) {
-    mesh = make_rectangle_mesh(
-        {.length = channel_length, .width = channel_width, .nx = 150, .ny = 17});
+  /// `steps` of 1 s (0: the initial state only), on nx x ny rectangles cut in two.
+  explicit EngineFlow(FlowEngineKind kind, int nx = 150, int ny = 17, int steps = 1) {
+    mesh =
+        make_rectangle_mesh({.length = channel_length, .width = channel_width, .nx = nx, .ny = ny});
     flow_case.name = "bench_bodies_forces";
     flow_case.mesh.kind = MeshSource::Kind::file;
     flow_case.flow.engine = kind;
@@ -69,7 +74,7 @@ struct EngineFlow {
     flow_case.time = {.end = 10.0, .step = 1.0, .mode = CouplingMode::one_way};
     engine = make_flow_engine(mesh, flow_case);
     engine->initialize();
-    engine->step(1.0);
+    for (int i = 0; i < steps; ++i) engine->step(1.0);
   }
 };
 
@@ -91,6 +96,7 @@ void BM_BodyStep(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
   const FlowField& flow =
       engine ? engine->engine->field() : static_cast<const FlowField&>(analytic);
+  auto* fem = engine ? dynamic_cast<FemFlowField*>(&engine->engine->field()) : nullptr;
   const BodyIntegrator integrator(model);
   BodySet bodies = channel_logs();
   double t = 0.0;
@@ -106,6 +112,7 @@ void BM_BodyStep(benchmark::State& state) {
       t = t_start;
     }
     state.ResumeTiming();
+    if (fem) fem->pack_states();  // the same states: what a new flow step costs
     const IntegrationStats s = integrator.advance(bodies, flow, t, t + flow_step);
     t += flow_step;
     accepted += s.accepted;
@@ -131,6 +138,28 @@ BENCHMARK(BM_BodyStep)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(1.0);
+
+// What the FEM's field pays once per flow step for the bodies: the copy of the two states and
+// the bed into the nodes' packs (FemFlowField::pack_states). Arguments: threads, rectangles
+// along and across the channel (elements = 2 nx ny).
+void BM_PackStates(benchmark::State& state) {
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  EngineFlow flow(FlowEngineKind::fem, static_cast<int>(state.range(1)),
+                  static_cast<int>(state.range(2)), 0);
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  auto& field = dynamic_cast<FemFlowField&>(flow.engine->field());
+  for (auto _ : state) field.pack_states();
+  state.counters["nodes"] = flow.mesh.node_count();
+}
+
+BENCHMARK(BM_PackStates)
+    ->ArgNames({"threads", "nx", "ny"})
+    ->Args({1, 150, 17})
+    ->Args({2, 150, 17})
+    ->Args({1, 500, 50})
+    ->Args({2, 500, 50})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace flotsam

@@ -107,11 +107,11 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(&mesh) {
 
   // The corners of each element for locate_batch's check of a hint.
   const double stale = 4.0 * cell_.norm();  // [m] locate's bound on a hint's distance
-  hint_corners_.resize(8 * static_cast<std::size_t>(element_count));
+  hint_corners_.resize(element_count);
   for (int e = 0; e < element_count; ++e) {
     const auto& el = mesh.elements[e];
     const Vec2 &a = mesh.nodes[el[0]], &b = mesh.nodes[el[1]], &d = mesh.nodes[el[2]];
-    double* g = &hint_corners_[8 * static_cast<std::size_t>(e)];
+    double* g = hint_corners_[e].g;
     g[0] = a.x(), g[1] = a.y(), g[2] = b.x(), g[3] = b.y(), g[4] = d.x(), g[5] = d.y();
     g[6] = 1.0 / (2.0 * mesh.area[e]);
     // A point within eps of a straight triangle is within (1 + 3 eps) of its farthest corner
@@ -248,7 +248,7 @@ void PointLocator::locate_batch(int n, const double* x, const double* y, const b
     const int e = hints[k];
     const Vec2 p(x[k], y[k]);
     if (e >= 0 && e < element_count) {
-      const double* g = &hint_corners_[8 * static_cast<std::size_t>(e)];
+      const double* g = hint_corners_[e].g;
       if (g[7] != 0.0) {  // edge_coordinates and reference_coordinates of a straight element
         const Vec2 a = Vec2(g[0], g[1]) - p, b = Vec2(g[2], g[3]) - p, d = Vec2(g[4], g[5]) - p;
         const double c0 = cross(a, b) * g[6], c1 = cross(b, d) * g[6], c2 = cross(d, a) * g[6];

@@ -85,10 +85,13 @@ class PointLocator {
   std::vector<int> bucket_begin_;  // CSR: elements overlapping bucket b are
   std::vector<int> bucket_elements_;  // bucket_elements_[bucket_begin_[b] .. bucket_begin_[b+1])
   int max_steps_ = 0;                 // step cap of one walk before the fallback
-  // Per element, 8 numbers (one cache line): the corners x0 y0 x1 y1 x2 y2 [m], 1 / (2 A)
-  // [m^-2] as edge_coordinates computes it, and 1 when a point in the element is never a stale
-  // hint's (straight, and every point of it within 4 bucket diagonals of corner 0), else 0.
-  std::vector<double> hint_corners_;
+  // Per element, 8 numbers in one cache line (aligned to it): the corners x0 y0 x1 y1 x2 y2 [m],
+  // 1 / (2 A) [m^-2] as edge_coordinates computes it, and 1 when a point in the element is never
+  // a stale hint's (straight, and every point of it within 4 bucket diagonals of corner 0), else 0.
+  struct alignas(64) HintCorners {
+    double g[8];
+  };
+  std::vector<HintCorners> hint_corners_;
 };
 
 }  // namespace flotsam

@@ -4,16 +4,21 @@
 // on the circles, points in the piers and beyond the banks), at random points, on element edges
 // and vertices, from fresh, cached, stale and invalid hints, at times in and beyond the step, in
 // a flow that moves and, for the finite-volume engine, over a bed that rises out of the water
-// (dry cells).
+// (dry cells); for the FEM's field also after a restore and further steps (the elements' packs
+// follow the states), and a field whose states changed since they were packed refuses a batch.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
 
+#include "../support/scratch_path.hpp"
 #include "../support/two_pier_channel.hpp"
 #include "coupling/flow_engines.hpp"
+#include "flow/fem/fem_flow_field.hpp"
 #include "flow/flow_batch.hpp"
+#include "io/binary_archive.hpp"
 #include "mesh/mesh_generator.hpp"
 
 namespace flotsam {
@@ -23,9 +28,9 @@ Mesh channel_with_piers() {
   return generate_mesh(test::two_pier_channel());
 }
 
-/// A moving flow over a sloping bed, stepped twice, so that the step's two states differ. The
-/// finite-volume bed rises above the water for x > 150 m (dry cells); the FEM's stays under it.
-std::unique_ptr<FlowEngine> stepped_engine(const Mesh& mesh, FlowEngineKind kind) {
+/// A moving flow over a sloping bed. The finite-volume bed rises above the water for x > 150 m
+/// (dry cells); the FEM's stays under it.
+Case moving_flow_case(FlowEngineKind kind) {
   Case c;
   c.name = "batch_sampling";
   c.mesh.kind = MeshSource::Kind::file;
@@ -38,12 +43,23 @@ std::unique_ptr<FlowEngine> stepped_engine(const Mesh& mesh, FlowEngineKind kind
   c.bed.expression = Expression(
       kind == FlowEngineKind::fv ? "-2 + 0.02*x - 0.003*y" : "-3 + 0.005*x - 0.003*y", "test");
   c.time = {.end = 10.0, .step = 0.5, .mode = CouplingMode::one_way};
-  std::unique_ptr<FlowEngine> engine = make_flow_engine(mesh, c);
-  engine->initialize();
-  engine->step(0.5);
-  engine->step(0.5);
-  return engine;
+  return c;
 }
+
+/// That flow's engine (which keeps a reference to the case), stepped `steps` times by 0.5 s, so
+/// that the step's two states differ.
+struct SteppedFlow {
+  Case flow_case;
+  std::unique_ptr<FlowEngine> engine;
+
+  SteppedFlow(const Mesh& mesh, FlowEngineKind kind, int steps)
+      : flow_case(moving_flow_case(kind)), engine(make_flow_engine(mesh, flow_case)) {
+    engine->initialize();
+    for (int i = 0; i < steps; ++i) engine->step(0.5);
+  }
+  SteppedFlow(const SteppedFlow&) = delete;
+  SteppedFlow& operator=(const SteppedFlow&) = delete;
+};
 
 /// The bits of every lane of a and b are the same.
 int lanes_differing(const BatchFlow& a, const BatchFlow& b) {
@@ -130,9 +146,10 @@ BatchCounts compare_batches(const Mesh& mesh, const FlowField& field, std::uint3
 
 TEST(BatchSampling, FemBatchEqualsPointByPointBitForBit) {
   const Mesh mesh = channel_with_piers();
-  const auto engine = stepped_engine(mesh, FlowEngineKind::fem);
-  ASSERT_LT(engine->field().time_begin(), engine->field().time_end());
-  const BatchCounts counts = compare_batches(mesh, engine->field(), 11);
+  const SteppedFlow flow(mesh, FlowEngineKind::fem, 2);
+  const FlowField& field = flow.engine->field();
+  ASSERT_LT(field.time_begin(), field.time_end());
+  const BatchCounts counts = compare_batches(mesh, field, 11);
   EXPECT_GT(counts.inside, 10000);
   EXPECT_GT(counts.outside, 1000);  // in the piers and beyond the banks
   EXPECT_GT(counts.curved, 100);
@@ -141,13 +158,66 @@ TEST(BatchSampling, FemBatchEqualsPointByPointBitForBit) {
 
 TEST(BatchSampling, FiniteVolumeBatchEqualsPointByPointBitForBit) {
   const Mesh mesh = channel_with_piers();
-  const auto engine = stepped_engine(mesh, FlowEngineKind::fv);
-  ASSERT_LT(engine->field().time_begin(), engine->field().time_end());
-  const BatchCounts counts = compare_batches(mesh, engine->field(), 12);
+  const SteppedFlow flow(mesh, FlowEngineKind::fv, 2);
+  const FlowField& field = flow.engine->field();
+  ASSERT_LT(field.time_begin(), field.time_end());
+  const BatchCounts counts = compare_batches(mesh, field, 12);
   EXPECT_GT(counts.inside, 10000);
   EXPECT_GT(counts.outside, 1000);
   EXPECT_GT(counts.dry, 1000);  // x > 150 m: the bed above the water
   EXPECT_GT(counts.on_edges, 5000);
+}
+
+// The FEM's batch reads the elements' packs of the states (FemFlowField::pack_states): the
+// engine packs them again after a restore from a checkpoint and after each further step, so the
+// batch still equals sample bit for bit.
+TEST(BatchSampling, FemBatchFollowsTheStatesThroughARestoreAndSteps) {
+  const Mesh mesh = channel_with_piers();
+  const std::string path = test::scratch_path("batch_sampling_fem.bin").string();
+  {
+    const SteppedFlow stepped(mesh, FlowEngineKind::fem, 2);
+    ArchiveWriter w(path);
+    stepped.engine->save(w, "flow");
+    w.close();
+  }
+  const SteppedFlow flow(mesh, FlowEngineKind::fem, 0);  // both states at t = 0 before this
+  ArchiveReader r(path);
+  flow.engine->restore(r, "flow");
+  const FlowField& field = flow.engine->field();
+  EXPECT_EQ(field.time_begin(), 0.5);
+  EXPECT_EQ(field.time_end(), 1.0);
+  EXPECT_GT(compare_batches(mesh, field, 13).inside, 10000);
+  flow.engine->step(0.5);
+  EXPECT_EQ(field.time_end(), 1.5);
+  EXPECT_GT(compare_batches(mesh, field, 14).inside, 10000);
+}
+
+// A field whose solver stepped without pack_states refuses to sample a batch from the old packs.
+TEST(BatchSampling, FemBatchRefusesStatesChangedSincePacked) {
+  const Mesh mesh = channel_with_piers();
+  const Case c = moving_flow_case(FlowEngineKind::fem);
+  ShallowWaterSolver solver(mesh, c);
+  solver.initialize();
+  FemFlowField field(solver);
+  field.pack_states();
+  solver.step(0.5);
+  alignas(64) Lanes x, y, t;
+  bool active[batch_width];
+  int hints[batch_width];
+  for (int k = 0; k < batch_width; ++k) x[k] = 20.0 + k, y[k] = 30.0, t[k] = 0.25;
+  for (int k = 0; k < batch_width; ++k) active[k] = true, hints[k] = -1;
+  BatchFlow out;
+  EXPECT_THROW(field.sample_batch(x, y, t, active, hints, out), std::logic_error);
+  field.pack_states();
+  field.sample_batch(x, y, t, active, hints, out);
+  for (int k = 0; k < batch_width; ++k) {
+    int hint = -1;
+    const FlowSample expected = field.sample({x[k], y[k]}, t[k], hint);
+    ASSERT_TRUE(expected.inside);
+    EXPECT_EQ(out.u[k], expected.u.x());
+    EXPECT_EQ(out.H[k], expected.H);
+    EXPECT_EQ(hints[k], hint);
+  }
 }
 
 }  // namespace

@@ -14,6 +14,12 @@ FemEngine::FemEngine(const Mesh& mesh, const Case& flow_case)
 
 void FemEngine::initialize() {
   solver_.initialize();
+  field_.pack_states();
+}
+
+void FemEngine::step(double dt) {
+  solver_.step(dt);
+  field_.pack_states();
 }
 
 // Frozen mode's flow: the steady solve, or when it does not converge (a flow with no steady
@@ -27,6 +33,7 @@ void FemEngine::settle(const TimeConfig& time) {
     if (steady.converged) {
       spdlog::info("steady flow: residual {:.3g} after {} iterations", steady.residuals.back(),
                    steady.iterations);
+      field_.pack_states();
       return;
     }
     spdlog::info(
@@ -47,6 +54,7 @@ void FemEngine::settle(const TimeConfig& time) {
   balance.group_outflow.assign(mesh().group_names.size(), 0.0);
   balance.group_rate.assign(mesh().group_names.size(), 0.0);
   solver_.restore_water_balance(balance);
+  field_.pack_states();
 }
 
 void FemEngine::write_fields(const std::string& path, double t) const {
@@ -111,6 +119,7 @@ void FemEngine::restore(ArchiveReader& r, const std::string& prefix) {
                   previous = read_state(r, prefix + ".previous", solver_);
   solver_.set_state(s, &previous);
   solver_.restore_water_balance(read_water_balance(r, prefix));
+  field_.pack_states();
 }
 
 }  // namespace flotsam

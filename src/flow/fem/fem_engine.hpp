@@ -1,7 +1,8 @@
 #pragma once
 // The paper's P2-P1 finite-element engine (shallow_water_solver.hpp) behind the FlowEngine
 // interface: the solver, the field the bodies sample (fem_flow_field.hpp), its output,
-// checkpoint and frozen-mode steady state.
+// checkpoint and frozen-mode steady state. After every change of the solver's states the field
+// packs them for the bodies (FemFlowField::pack_states).
 #include <memory>
 
 #include "flow/fem/fem_flow_field.hpp"
@@ -16,7 +17,7 @@ class FemEngine final : public FlowEngine {
   FemEngine(const Mesh& mesh, const Case& flow_case);
 
   void initialize() override;
-  void step(double dt) override { solver_.step(dt); }
+  void step(double dt) override;
   void settle(const TimeConfig& time) override;
   double time() const override { return solver_.time(); }
   FlowField& field() override { return field_; }

@@ -14,14 +14,20 @@ FemFlowField::FemFlowField(ShallowWaterSolver& solver) : solver_(solver), locato
   // A straight element's map x = x_0 + r (x_1 - x_0) + s (x_2 - x_0) has a constant Jacobian:
   // its J^-T once here instead of the isoparametric sum at every sample.
   const Mesh& mesh = solver_.mesh();
-  straight_inverse_.resize(mesh.element_count(), Mat2::Zero());
+  elements_.resize(mesh.element_count());
   for (int e = 0; e < mesh.element_count(); ++e) {
-    if (mesh.is_curved(e)) continue;
     const auto& el = mesh.elements[e];
-    Mat2 J;
-    J.col(0) = mesh.nodes[el[1]] - mesh.nodes[el[0]];
-    J.col(1) = mesh.nodes[el[2]] - mesh.nodes[el[0]];
-    straight_inverse_[e] = J.inverse().transpose();
+    ElementRecord& record = elements_[e];
+    for (int k = 0; k < 6; ++k) record.pack[k] = NodePack::size * el[k];
+    Mat2 J_inv_T = Mat2::Zero();
+    if (!mesh.is_curved(e)) {
+      Mat2 J;
+      J.col(0) = mesh.nodes[el[1]] - mesh.nodes[el[0]];
+      J.col(1) = mesh.nodes[el[2]] - mesh.nodes[el[0]];
+      J_inv_T = J.inverse().transpose();
+    }
+    record.J[0] = J_inv_T(0, 0), record.J[1] = J_inv_T(0, 1);
+    record.J[2] = J_inv_T(1, 0), record.J[3] = J_inv_T(1, 1);
   }
 }
 
@@ -39,7 +45,9 @@ FlowSample FemFlowField::sample(const Vec2& p, double t, int& hint) const {
   const P2Values N = p2_values(where.r, where.s);
   const P2Gradients g2 = p2_reference_gradients(where.r, where.s);
   const P1Values M = p1_values(where.r, where.s);
-  Mat2 J_inv_T = straight_inverse_[where.element];
+  const double* straight = elements_[where.element].J;
+  Mat2 J_inv_T;
+  J_inv_T << straight[0], straight[1], straight[2], straight[3];
   if (where.curved) {
     Mat2 J = Mat2::Zero();  // isoparametric map at (r, s)
     for (int k = 0; k < 6; ++k) J += mesh.nodes[el[k]] * g2[k].transpose();

@@ -13,10 +13,30 @@
 
 namespace flotsam {
 
+/// One node's values as sample_batch reads them: 8 doubles, one cache line (the packs aligned to
+/// lines), node n's at n * size.
+struct NodePack {
+  static constexpr int u0 = 0, v0 = 1, u1 = 2, v1 = 3;  // [m/s] velocity, the step's start, end
+  static constexpr int bed = 4;                         // [m] z_b
+  static constexpr int eta0 = 5, eta1 = 6;  // [m] elevation, start and end (a vertex; else 0)
+  static constexpr int size = 8;
+};
+
+/// An element's J^-T (which sample reads) and its nodes' packs (sample_batch), in one cache line.
+struct alignas(64) ElementRecord {
+  double J[4];  // J^-T of a straight element, row by row (constant on it; 0 for a curved one)
+  int pack[6];  // the six nodes' packs, node * NodePack::size
+};
+
 class FemFlowField final : public FlowField {
  public:
   /// Keeps a reference to `solver`, which must outlive the field.
   explicit FemFlowField(ShallowWaterSolver& solver);
+
+  /// Copies the solver's two states into the nodes' packs that sample_batch reads. To be called
+  /// whenever the solver's states change (FemEngine does after each step, initialize, settle and
+  /// restore); sample_batch refuses a pack that is not of the states' times.
+  void pack_states();
 
   FlowSample sample(const Vec2& p, double t, int& hint) const override;
   /// fem_batch_sample.cpp: sample's interpolation for the batch's points in vector loops.
@@ -29,7 +49,10 @@ class FemFlowField final : public FlowField {
  private:
   ShallowWaterSolver& solver_;
   PointLocator locator_;
-  std::vector<Mat2> straight_inverse_;  // J^-T of each straight element (constant on it)
+  std::vector<ElementRecord> elements_;
+  std::vector<double> pack_storage_;               // the nodes' packs for sample_batch from pack_
+  int pack_ = 0;                                   // (the first 64-byte boundary in the storage)
+  double packed_begin_ = 0.0, packed_end_ = -1.0;  // [s] the states' times when packed
 };
 
 }  // namespace flotsam
