@@ -2,10 +2,11 @@
 // "same result for 1 and 2 threads"): element colours share no node, so every matrix entry is
 // summed in the same order whatever the threads. A few steps of an unsteady flow with every term
 // that depends on the state (advection, Manning, Smagorinsky, hydrograph inflow) on 1 and on 2
-// threads give bit-identical states (exact comparison, tolerance 0).
+// threads give bit-identical states (exact comparison, tolerance 0), with either step.
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "../../support/flow_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -24,9 +25,12 @@ FlowState run_on_threads(const Mesh& mesh, const Case& c, int threads) {
   return solver.state();
 }
 
-TEST(ThreadCountDeterminism, OneAndTwoThreadsGiveBitIdenticalStates) {
+class ThreadCountDeterminism : public testing::TestWithParam<FlowScheme> {};
+
+TEST_P(ThreadCountDeterminism, OneAndTwoThreadsGiveBitIdenticalStates) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 200.0, 40.0, 20, 6, true});
   Case c;
+  c.flow.scheme = GetParam();
   c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;  // [m] over a flat bed
   c.flow.friction = FrictionLaw::manning;
   c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
@@ -42,26 +46,9 @@ TEST(ThreadCountDeterminism, OneAndTwoThreadsGiveBitIdenticalStates) {
   EXPECT_EQ(one.v, two.v);
 }
 
-TEST(ThreadCountDeterminism, SegregatedStepGivesBitIdenticalStatesOnOneAndTwoThreads) {
-  // The same flow with the segregated step (its element sweeps and characteristics on the
-  // threads, its solves serial).
-  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 200.0, 40.0, 20, 6, true});
-  Case c;
-  c.flow.scheme = FlowScheme::segregated;
-  c.flow.initial_eta_start = c.flow.initial_eta_end = 2.0;  // [m] over a flat bed
-  c.flow.friction = FrictionLaw::manning;
-  c.flow.friction_coefficient = 0.03;  // [s m^-1/3]
-  c.flow.turbulence = TurbulenceModel::smagorinsky;
-  c.flow.boundaries = {
-      {BoundaryCondition::Kind::discharge, "left", TimeSeries({{0.0, 0.0}, {20.0, 30.0}}), {}},
-      {BoundaryCondition::Kind::elevation, "right", TimeSeries(2.0), {}}};
-  const FlowState one = run_on_threads(mesh, c, 1);
-  const FlowState two = run_on_threads(mesh, c, 2);
-  ASSERT_GT(std::abs(one.u[0]) + std::abs(one.eta[0] - 2.0), 0.0);  // the flow has moved
-  EXPECT_EQ(one.eta, two.eta);
-  EXPECT_EQ(one.u, two.u);
-  EXPECT_EQ(one.v, two.v);
-}
+// The segregated step's element sweeps and characteristics run on the threads, its solves serial.
+INSTANTIATE_TEST_SUITE_P(FlowSchemes, ThreadCountDeterminism, test::both_flow_schemes,
+                         test::flow_scheme_name);
 
 }  // namespace
 }  // namespace flotsam
