@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ struct Result {
   double second_solves = 0.0;    // flotsam: share of the steps solved twice (docs/model.md)
   double islands = 0.0;          // flotsam: islands per step (contact/islands.hpp)
   double detect_ms = 0.0;        // flotsam: boxes, broad and narrow phase per step [ms]
+  double pairs_ms = 0.0;         // flotsam: of which boxes and broad phase [ms]
   double solve_ms = 0.0;         // flotsam: the solver per step [ms]
   double positions_ms = 0.0;     // flotsam: the position stage per step [ms]
   double sleeping = 0.0;         // flotsam: islands asleep per step (not solved)
@@ -101,7 +103,8 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
   ContactWorld world(config);
   for (int k = 0; k < warm_up; ++k) world.step(scene.bodies, scene.walls, move_jam_logs(scene));
   double sweeps = 0.0, second_solves = 0.0, islands = 0.0, sleeping = 0.0;
-  double detect = 0.0, solve = 0.0, positions = 0.0;  // [s] of the last solve of each step
+  double detect = 0.0, pairs = 0.0, solve = 0.0,
+         positions = 0.0;  // [s] of the last solve of each step
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_seconds();
   for (int k = 0; k < timed; ++k) {
@@ -112,6 +115,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
     sleeping += world.profile().sleeping_islands;
     const ContactProfile& p = world.profile();
     detect += p.boxes + p.broad_phase + p.narrow_phase;
+    pairs += p.boxes + p.broad_phase;
     solve += p.solve;
     positions += p.positions;
   }
@@ -125,6 +129,7 @@ Result run_flotsam(JamScene scene, int warm_up, int timed, ContactSolverKind sol
   r.islands = islands / timed;
   r.sleeping = sleeping / timed;
   r.detect_ms = 1e3 * detect / timed;
+  r.pairs_ms = 1e3 * pairs / timed;
   r.solve_ms = 1e3 * solve / timed;
   r.positions_ms = 1e3 * positions / timed;
   return r;
@@ -200,15 +205,18 @@ Result run_box2d(JamScene scene, int warm_up, int timed, bool sleep) {
 // sequential impulses (minutes at 50k); `--sleep`: both engines let resting islands sleep
 // (Box2D's push no longer wakes a sleeping body; flotsam's soft step with sleep_time 0.5 s, as a
 // case file's default: docs/model.md "Sleeping islands"), else every body is solved every step;
-// `--warm-up N`: N steps before the timed ones (default 100).
+// `--warm-up N`: N steps before the timed ones (default 100); `--no-box2d` leaves out Box2D (to
+// compare two builds of flotsam: no ratios then).
 int main(int argc, char** argv) {
   using namespace flotsam;
   std::vector<int> counts;
-  bool sequential = true, sleep = false;
+  bool sequential = true, sleep = false, box2d = true;
   int warm_up = 100;  // steps of 0.02 s before the timed ones
   for (int k = 1; k < argc; ++k) {
     if (std::string(argv[k]) == "--no-sequential") {
       sequential = false;
+    } else if (std::string(argv[k]) == "--no-box2d") {
+      box2d = false;
     } else if (std::string(argv[k]) == "--sleep") {
       sleep = true;
     } else if (std::string(argv[k]) == "--warm-up" && k + 1 < argc) {
@@ -228,7 +236,7 @@ int main(int argc, char** argv) {
     spec.row_gap = 0.0;
     const JamScene scene = make_jam_scene(spec);
     const int timed = n >= 50000 ? 20 : 50;  // steps of 0.02 s
-    const Result b = run_box2d(scene, warm_up, timed, sleep);
+    const Result b = box2d ? run_box2d(scene, warm_up, timed, sleep) : Result{};
     const Result f = sequential ? run_flotsam(scene, warm_up, timed,
                                               ContactSolverKind::sequential_impulses, sleep)
                                 : Result{};
@@ -238,15 +246,19 @@ int main(int argc, char** argv) {
       std::printf("%7d %-8s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
                   r.cpu_ms_per_step, 1e3 * r.largest, 1e3 * r.percentile_99, r.past_piers);
     }
+    const auto ratio = [&](double x, double y) {  // nan without Box2D
+      return box2d ? x / y : std::numeric_limits<double>::quiet_NaN();
+    };
     for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"soft", s}}) {
       std::printf(
           "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f asleep, %.0f "
           "velocity sweeps per step, %.0f %% of steps solved twice; last solve per step: "
-          "detection %.2f ms, solver %.2f ms, positions %.2f ms; final state %016llx)\n",
-          n, name, r.ms_per_step / b.ms_per_step, r.cpu_ms_per_step / b.cpu_ms_per_step,
-          r.largest / b.largest, r.percentile_99 / b.percentile_99, r.islands, r.sleeping, r.sweeps,
-          100.0 * r.second_solves, r.detect_ms, r.solve_ms, r.positions_ms,
-          static_cast<unsigned long long>(r.state_hash));
+          "detection %.2f ms (pairs %.2f), solver %.2f ms, positions %.2f ms; final state "
+          "%016llx)\n",
+          n, name, ratio(r.ms_per_step, b.ms_per_step), ratio(r.cpu_ms_per_step, b.cpu_ms_per_step),
+          ratio(r.largest, b.largest), ratio(r.percentile_99, b.percentile_99), r.islands,
+          r.sleeping, r.sweeps, 100.0 * r.second_solves, r.detect_ms, r.pairs_ms, r.solve_ms,
+          r.positions_ms, static_cast<unsigned long long>(r.state_hash));
     }
     std::fflush(stdout);
   }

@@ -2,10 +2,16 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <tuple>
+
+#include <omp.h>
+
+#include "core/parallel_for.hpp"
 
 namespace flotsam {
 namespace {
@@ -218,13 +224,8 @@ void ContactWorld::update_boxes(const BodySet& bodies) {
     boxes_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
     rectangles_[i] = r;
   };
-  const int count = static_cast<int>(in_step_.size());
-  if (count >= parallel_pairs) {
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < count; ++k) box(in_step_[static_cast<std::size_t>(k)]);
-  } else {
-    for (const int i : in_step_) box(i);
-  }
+  parallel_for(static_cast<int>(in_step_.size()), parallel_pairs,
+               [&](int k) { box(in_step_[static_cast<std::size_t>(k)]); });
 }
 
 void ContactWorld::find_pairs(const BoundarySegments& walls) {
@@ -233,20 +234,36 @@ void ContactWorld::find_pairs(const BoundarySegments& walls) {
   } else {
     brute_force_pairs(boxes_, active_, body_pairs_);
   }
+  // The (body, segment) pairs of a run of in_step_, in its order, into one thread's list.
+  const auto find_wall_pairs = [&](std::size_t begin, std::size_t end, WallQuery& q) {
+    q.pairs.clear();
+    for (std::size_t k = begin; k < end; ++k) {
+      const int i = in_step_[k];
+      if (broad_phase_ == BroadPhase::sweep_and_prune) {
+        walls.query(boxes_[i], q.found, q.stamp, q.stamp_value);
+      } else {
+        q.found.resize(static_cast<std::size_t>(walls.size()));
+        for (int s = 0; s < walls.size(); ++s) q.found[s] = s;
+      }
+      for (const int s : q.found) {
+        const Aabb segment_box{walls.start[s].cwiseMin(walls.end[s]),
+                               walls.start[s].cwiseMax(walls.end[s])};
+        if (segment_box.overlaps(boxes_[i])) q.pairs.emplace_back(i, s);
+      }
+    }
+  };
+  // Each thread a run of the bodies (one run below parallel_pairs), the runs joined in order: the
+  // same pairs on any number of threads.
+  const std::size_t count = in_step_.size();
+  const bool parallel = count >= static_cast<std::size_t>(parallel_pairs);
+  wall_queries_.resize(static_cast<std::size_t>(parallel ? omp_get_max_threads() : 1));
+  const std::size_t runs = wall_queries_.size();
+  parallel_for(runs, std::size_t{2}, [&](std::size_t r) {
+    find_wall_pairs(count * r / runs, count * (r + 1) / runs, wall_queries_[r]);
+  });
   wall_pairs_.clear();
-  for (const int i : in_step_) {
-    if (broad_phase_ == BroadPhase::sweep_and_prune) {
-      walls.query(boxes_[i], found_, stamp_, stamp_value_);
-    } else {
-      found_.resize(static_cast<std::size_t>(walls.size()));
-      for (int s = 0; s < walls.size(); ++s) found_[s] = s;
-    }
-    for (const int s : found_) {
-      const Aabb segment_box{walls.start[s].cwiseMin(walls.end[s]),
-                             walls.start[s].cwiseMax(walls.end[s])};
-      if (segment_box.overlaps(boxes_[i])) wall_pairs_.emplace_back(i, s);
-    }
-  }
+  for (const WallQuery& q : wall_queries_)
+    wall_pairs_.insert(wall_pairs_.end(), q.pairs.begin(), q.pairs.end());
   profile_.body_pairs = static_cast<int>(body_pairs_.size());
   profile_.wall_pairs = static_cast<int>(wall_pairs_.size());
 }
@@ -260,13 +277,17 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
     return active_[c.a] || (c.b >= 0 && active_[c.b]);
   };
   others_.clear();
-  if (std::all_of(contacts_.begin(), contacts_.end(), of_step)) {
+  std::atomic<bool> all_of_step = true;  // read through in parallel: a contact is 512 bytes
+  parallel_for(static_cast<int>(contacts_.size()), parallel_pairs, [&](int m) {
+    if (!of_step(contacts_[static_cast<std::size_t>(m)]))
+      all_of_step.store(false, std::memory_order_relaxed);
+  });
+  if (all_of_step) {
     previous_.swap(contacts_);  // all of them (one group, the whole set): no copy
   } else {
     previous_.clear();
     for (ContactConstraint& c : contacts_) (of_step(c) ? previous_ : others_).push_back(c);
   }
-  index_previous(bodies.size());
   // The manifolds in parallel (each pair on its own), then kept in the pairs' order: the same
   // contacts on any number of threads.
   const int body_pairs = static_cast<int>(body_pairs_.size());
@@ -290,23 +311,22 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   };
   const int pairs = body_pairs + wall_pairs;
   if (pairs >= parallel_pairs) {
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < pairs; ++k) collide_pair(k);
+#pragma omp parallel
+    {
+#pragma omp single nowait
+      index_previous(bodies.size());  // meanwhile the other threads take the first pairs
+#pragma omp for schedule(dynamic, 256)
+      for (int k = 0; k < pairs; ++k) collide_pair(k);
+      keep_touching(body_pairs);
+    }
   } else {  // no parallel region: it costs about a microsecond even on one thread
+    index_previous(bodies.size());
     for (int k = 0; k < pairs; ++k) collide_pair(k);
-  }
-  // The pairs that touch, body pairs then wall pairs, and their islands.
-  kept_.clear(), ends_.clear();
-  for (int k = 0; k < pairs; ++k) {
-    if (!touching_[static_cast<std::size_t>(k)]) continue;
-    kept_.push_back(k);
-    ends_.push_back(k < body_pairs ? body_pairs_[static_cast<std::size_t>(k)]
-                                   : BodyPair(wall_pairs_[k - body_pairs].first, -1));
+    keep_touching(body_pairs);
   }
   const std::vector<int>& destination = islands_.number(ends_, bodies.size());
   const int count = static_cast<int>(kept_.size());
   source_.resize(kept_.size());
-  for (int m = 0; m < count; ++m) source_[static_cast<std::size_t>(destination[m])] = m;
   contacts_.resize(kept_.size());  // every one overwritten below
   // Contact d of the new order, from the pair's manifold; `hint` follows the last contacts
   // matched (warm_start()). Returns the points warm-started.
@@ -336,6 +356,8 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   if (count >= parallel_pairs) {
 #pragma omp parallel reduction(+ : points, warm_started)
     {
+#pragma omp for schedule(static)
+      for (int m = 0; m < count; ++m) source_[static_cast<std::size_t>(destination[m])] = m;
       int hint = 0;  // each thread's block of contacts in order (schedule static)
 #pragma omp for schedule(static)
       for (int d = 0; d < count; ++d) {
@@ -344,6 +366,7 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
       }
     }
   } else {
+    for (int m = 0; m < count; ++m) source_[static_cast<std::size_t>(destination[m])] = m;
     int hint = 0;
     for (int d = 0; d < count; ++d) {
       warm_started += build(d, hint);
@@ -353,6 +376,37 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
   profile_.contacts = count;
   profile_.points = points;
   profile_.warm_started_points = warm_started;
+}
+
+// The pairs that touch (kept_), body pairs then wall pairs in their order, and their bodies
+// (ends_, b = -1 for a wall). Called by every thread of a parallel region, or outside one: each
+// thread counts the touching pairs of its run, then writes them where the runs before it end.
+void ContactWorld::keep_touching(int body_pairs) {
+  const auto pairs = touching_.size();
+  const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+  const auto t = static_cast<std::size_t>(omp_get_thread_num());
+  const std::size_t begin = pairs * t / threads, end = pairs * (t + 1) / threads;
+  int touching = 0;
+  for (std::size_t k = begin; k < end; ++k) touching += touching_[k];
+#pragma omp single
+  run_start_.assign(threads + 1, 0);
+  run_start_[t + 1] = touching;
+#pragma omp barrier
+#pragma omp single
+  {
+    std::partial_sum(run_start_.begin(), run_start_.end(), run_start_.begin());
+    kept_.resize(static_cast<std::size_t>(run_start_.back()));
+    ends_.resize(kept_.size());
+  }
+  auto d = static_cast<std::size_t>(run_start_[t]);
+  for (std::size_t k = begin; k < end; ++k) {
+    if (!touching_[k]) continue;
+    const int pair = static_cast<int>(k);
+    kept_[d] = pair;
+    ends_[d++] = pair < body_pairs
+                     ? body_pairs_[k]
+                     : BodyPair(wall_pairs_[k - static_cast<std::size_t>(body_pairs)].first, -1);
+  }
 }
 
 // previous_ listed by body A: first_previous_[a], then next_previous_[m], in ascending order.

@@ -101,6 +101,7 @@ class ContactWorld {
   void find_pairs(const BoundarySegments& walls);
   void find_interval_start(const BodySet& bodies);
   void collide(const BodySet& bodies, const BoundarySegments& walls);
+  void keep_touching(int body_pairs);
   void index_previous(int body_count);
   int warm_start(ContactConstraint& c, int& hint) const;
   void solve(BodySet& bodies);
@@ -124,6 +125,7 @@ class ContactWorld {
   std::vector<std::pair<int, int>> previous_key_;
   std::vector<char> touching_;             // 1 for a pair whose manifold has points
   std::vector<int> kept_;                  // the pairs (body pairs, then wall pairs) with a contact
+  std::vector<int> run_start_;             // keep_touching(): where each thread's run starts
   std::vector<BodyPair> ends_;             // their bodies (b = -1: a wall)
   std::vector<int> source_;                // contacts_[d] is of the pair kept_[source_[d]]
   std::vector<ContactConstraint> others_;  // contacts of the bodies outside this step's group
@@ -142,8 +144,12 @@ class ContactWorld {
   std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
   std::vector<int> grown_;         // the bodies whose reach_ the last step grew
   std::vector<double> lengths_;    // h per body [s]
-  std::vector<int> found_, stamp_;
-  int stamp_value_ = 0;
+  struct WallQuery {  // one thread's grid query (BoundarySegments::query) and the pairs it found
+    std::vector<int> found, stamp;
+    int stamp_value = 0;
+    std::vector<std::pair<int, int>> pairs;
+  };
+  std::vector<WallQuery> wall_queries_;
   ContactProfile profile_;
 };
 

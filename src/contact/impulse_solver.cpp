@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "contact/restitution_energy.hpp"
+#include "core/parallel_for.hpp"
 
 namespace flotsam {
 namespace {
@@ -174,12 +175,7 @@ void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodi
       }
     }
   };
-  if (count >= 2000) {
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t m = 0; m < count; ++m) prepare(m);
-  } else {  // no parallel region: it costs about a microsecond even on one thread
-    for (std::ptrdiff_t m = 0; m < count; ++m) prepare(m);
-  }
+  parallel_for(count, std::ptrdiff_t{2000}, prepare);  // [-] threads from a few thousand
 }
 
 void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& bodies,

@@ -35,10 +35,14 @@ class Islands {
  private:
   int size(int k) const { return start_[k + 1] - start_[k]; }
   int root(int body);
+  void join(int a, int b);
+  void number_in_team(std::span<const BodyPair> ends);
 
   std::vector<int> parent_;  // union-find over bodies
-  std::vector<int> island_of_root_, island_of_contact_, start_, next_, largest_first_;
-  std::vector<int> destination_;  // of each contact, once grouped
+  std::vector<int> first_of_root_, island_of_root_, root_of_contact_, island_of_contact_;
+  std::vector<int> start_, largest_first_;
+  std::vector<int> run_start_, thread_counts_;  // number_in_team(): per thread, per island
+  std::vector<int> destination_;                // of each contact, once grouped
   std::vector<BodyPair> ends_;
   std::vector<ContactConstraint> sorted_;
 };

@@ -13,18 +13,20 @@ double solver_kinetic_energy(const Vec2& u, double omega, double inverse_mass,
   return energy;
 }
 
-void RestitutionEnergy::add(const Vec2& u, double omega, const Vec2& u_end, double omega_end,
-                            double inverse_mass, double inverse_inertia) {
+RestitutionTerms restitution_terms(const Vec2& u, double omega, const Vec2& u_end, double omega_end,
+                                   double inverse_mass, double inverse_inertia) {
   const Vec2 du = u_end - u;
   const double dw = omega_end - omega;  // [rad/s]
+  RestitutionTerms t;
   if (inverse_mass > 0.0) {
-    a += u.dot(du) / inverse_mass;
-    b += 0.5 * du.squaredNorm() / inverse_mass;
+    t.linear_a = u.dot(du) / inverse_mass;
+    t.linear_b = 0.5 * du.squaredNorm() / inverse_mass;
   }
   if (inverse_inertia > 0.0) {
-    a += omega * dw / inverse_inertia;
-    b += 0.5 * dw * dw / inverse_inertia;
+    t.angular_a = omega * dw / inverse_inertia;
+    t.angular_b = 0.5 * dw * dw / inverse_inertia;
   }
+  return t;
 }
 
 double RestitutionEnergy::fraction(double before, double mid, double e) const {

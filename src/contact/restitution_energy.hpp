@@ -22,12 +22,26 @@ namespace flotsam {
 double solver_kinetic_energy(const Vec2& u, double omega, double inverse_mass,
                              double inverse_inertia);
 
+/// One body's share of a and b below, its translation's and its turn's (0 where the body does
+/// not move), from its velocities after the compression (u, omega) and after the restitution
+/// (u', omega') [J].
+struct RestitutionTerms {
+  double linear_a = 0.0, angular_a = 0.0, linear_b = 0.0, angular_b = 0.0;
+};
+RestitutionTerms restitution_terms(const Vec2& u, double omega, const Vec2& u_end, double omega_end,
+                                   double inverse_mass, double inverse_inertia);
+
 /// E(s) = E_mid + s a + s^2 b, gathered body by body.
 struct RestitutionEnergy {
   double a = 0.0, b = 0.0;  // [J]
-  /// A body's velocities after the compression (u, omega) and after the restitution (u', omega').
+  void add(const RestitutionTerms& t) {
+    a += t.linear_a, a += t.angular_a;
+    b += t.linear_b, b += t.angular_b;
+  }
   void add(const Vec2& u, double omega, const Vec2& u_end, double omega_end, double inverse_mass,
-           double inverse_inertia);
+           double inverse_inertia) {
+    add(restitution_terms(u, omega, u_end, omega_end, inverse_mass, inverse_inertia));
+  }
   /// The fraction s in [0, 1] of the restitution's change that keeps E_end within the bound, from
   /// E_0 `before` and E_mid `mid` [J], e [-].
   double fraction(double before, double mid, double e) const;

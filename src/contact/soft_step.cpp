@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 
-#include "contact/restitution_energy.hpp"
-
 #include "core/constants.hpp"
 #include "core/vector_clones.hpp"
 
@@ -321,6 +319,9 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
     });
 #pragma omp critical
     largest = std::max(largest, worst);
+    const int moving = static_cast<int>(moving_.size());
+#pragma omp for schedule(static)
+    for (int m = 0; m < moving; ++m) energy_[static_cast<std::size_t>(m)] = body_energy(m);
   }
   largest_overlap_ = largest;
   bound_restitution();
@@ -341,16 +342,21 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
                        const BodyVelocities& start, bool threads) {
   const int n = bodies.size(), wall = n;
   const auto slots = static_cast<std::size_t>(n + 1);
-  movable_.assign(slots, 0);
-  for (int i = 0; i < n; ++i)
-    movable_[i] = masses.inverse_mass[i] > 0.0 || masses.inverse_inertia[i] > 0.0;
+  movable_.resize(slots);
+  movable_[wall] = 0;
   // The contacts' bodies in a compact copy: the serial passes below read them in colour order.
   const int contact_count = static_cast<int>(contacts.size());
   ends_.resize(contacts.size());
-#pragma omp parallel for schedule(static) if (threads)
-  for (int m = 0; m < contact_count; ++m) {
-    const ContactConstraint& c = contacts[static_cast<std::size_t>(m)];
-    ends_[static_cast<std::size_t>(m)] = {c.a, c.b};
+#pragma omp parallel if (threads)
+  {
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < n; ++i)
+      movable_[i] = masses.inverse_mass[i] > 0.0 || masses.inverse_inertia[i] > 0.0;
+#pragma omp for schedule(static)
+    for (int m = 0; m < contact_count; ++m) {
+      const ContactConstraint& c = contacts[static_cast<std::size_t>(m)];
+      ends_[static_cast<std::size_t>(m)] = {c.a, c.b};
+    }
   }
   colours_.assign(ends_, movable_);
   const std::vector<int>& order = colours_.order();
@@ -363,37 +369,52 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
         wide_start_[g] + (colours_.is_overflow(g) ? count : (count + lanes - 1) / lanes);
   }
   const int wides = wide_start_.back();
-  lane_contact_.assign(static_cast<std::size_t>(lanes * wides), -1);
-  for (int g = 0; g < groups; ++g) {
-    const int step = colours_.is_overflow(g) ? lanes : 1;
-    for (int k = colours_.start(g); k < colours_.start(g + 1); ++k)
-      lane_contact_[static_cast<std::size_t>(lanes * wide_start_[g] +
-                                             step * (k - colours_.start(g)))] = k;
-  }
+  lane_contact_.resize(static_cast<std::size_t>(lanes * wides));
   wide_.resize(static_cast<std::size_t>(wides)), block_.resize(static_cast<std::size_t>(wides));
   start_.resize(static_cast<std::size_t>(wides));
   body_.resize(slots), body_step_.resize(slots);
   inverse_mass_.resize(slots), inverse_inertia_.resize(slots);
   body_[wall] = Body{}, body_step_[wall] = BodyStep{};
   inverse_mass_[wall] = inverse_inertia_[wall] = 0.0;
-  // The bodies in contact in the order of their first contact, and each movable body's first
-  // contact in colour order (bit 0: of A, bit 1: of B).
-  seen_.assign(slots, 0);
-  first_.assign(order.size(), 0);
-  touched_.clear(), moving_.clear();
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const auto [a, b] = ends_[static_cast<std::size_t>(order[k])];
-    for (const int i : {a, b}) {
-      if (i < 0 || seen_[i]) continue;
-      seen_[i] = 1;
-      touched_.push_back(i);
-      if (movable_[i]) moving_.push_back(i), first_[k] |= i == a ? 1 : 2;
+#pragma omp parallel if (threads)
+  {
+    // The bodies in contact in the order of their first contact, and each movable body's first
+    // contact in colour order (bit 0: of A, bit 1: of B): one thread, while the others ...
+#pragma omp single nowait
+    {
+      seen_.assign(slots, 0);
+      first_.assign(order.size(), 0);
+      touched_.clear(), moving_.clear();
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        const auto [a, b] = ends_[static_cast<std::size_t>(order[k])];
+        for (const int i : {a, b}) {
+          if (i < 0 || seen_[i]) continue;
+          seen_[i] = 1;
+          touched_.push_back(i);
+          if (movable_[i]) moving_.push_back(i), first_[k] |= i == a ? 1 : 2;
+        }
+      }
+    }
+    // ... fill the lanes of colour g's Wides with its contacts in order, those of the overflow
+    // one to a Wide (k = -1: an empty lane).
+    for (int g = 0; g < groups; ++g) {
+      const int begin = colours_.start(g), end = colours_.start(g + 1);
+      const bool overflow = colours_.is_overflow(g);
+#pragma omp for schedule(dynamic, 64) nowait
+      for (int w = wide_start_[g]; w < wide_start_[g + 1]; ++w) {
+        for (int l = 0; l < lanes; ++l) {
+          const int k = overflow ? (l == 0 ? begin + w - wide_start_[g] : end)
+                                 : begin + lanes * (w - wide_start_[g]) + l;
+          lane_contact_[static_cast<std::size_t>(lanes * w + l)] = k < end ? k : -1;
+        }
+      }
     }
   }
   const int touched = static_cast<int>(touched_.size()), moving = static_cast<int>(moving_.size());
   saved_position_.resize(moving_.size()), saved_velocity_.resize(moving_.size());
   saved_angle_.resize(moving_.size()), saved_spin_.resize(moving_.size());
   mid_velocity_.resize(slots), mid_spin_.resize(slots);
+  energy_.resize(moving_.size());
 #pragma omp parallel if (threads)
   {
 #pragma omp for schedule(static) nowait
@@ -521,26 +542,34 @@ void SoftStep::relax(std::size_t w, int substep) {
   }
 }
 
+// Moving body m's kinetic energies before the contacts, after the compression and at the end,
+// and its share of E(s) (restitution_energy.hpp).
+SoftStep::BodyEnergy SoftStep::body_energy(int m) const {
+  const auto k = static_cast<std::size_t>(m);
+  const int i = moving_[k];
+  const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
+  const Body& b = body_[i];
+  return {solver_kinetic_energy(saved_velocity_[k], saved_spin_[k], w, w_i),
+          solver_kinetic_energy(mid_velocity_[i], mid_spin_[i], w, w_i),
+          solver_kinetic_energy(b.velocity, b.spin, w, w_i),
+          restitution_terms(mid_velocity_[i], mid_spin_[i], b.velocity, b.spin, w, w_i)};
+}
+
 // Newton's law with friction may gain energy (restitution_energy.hpp): when the bodies end with
 // more kinetic energy than they came with, the restitution's change is cut to the fraction that
-// gives back e^2 of what the compression took. The step's moving bodies are taken together.
+// gives back e^2 of what the compression took. The step's moving bodies are taken together, their
+// energies (body_energy(), found in parallel) summed in their order.
 void SoftStep::bound_restitution() {
   constexpr double round_off = 1e-12;         // [-] relative energy change taken for rounding
   double before = 0.0, mid = 0.0, end = 0.0;  // [J]
   RestitutionEnergy change;
-  for (std::size_t m = 0; m < moving_.size(); ++m) {
-    const int i = moving_[m];
-    const double w = inverse_mass_[i], w_i = inverse_inertia_[i];
-    const Body& b = body_[i];
-    before += solver_kinetic_energy(saved_velocity_[m], saved_spin_[m], w, w_i);
-    mid += solver_kinetic_energy(mid_velocity_[i], mid_spin_[i], w, w_i);
-    end += solver_kinetic_energy(b.velocity, b.spin, w, w_i);
-    change.add(mid_velocity_[i], mid_spin_[i], b.velocity, b.spin, w, w_i);
+  for (const BodyEnergy& e : energy_) {
+    before += e.before, mid += e.mid, end += e.end;
+    change.add(e.change);
   }
   if (end <= before * (1.0 + round_off)) return;
   const double s = change.fraction(before, mid, config_.restitution);  // [-]
-  for (std::size_t m = 0; m < moving_.size(); ++m) {
-    const int i = moving_[m];
+  for (const int i : moving_) {
     Body& b = body_[i];
     b.velocity = mid_velocity_[i] + s * (b.velocity - mid_velocity_[i]);
     b.spin = mid_spin_[i] + s * (b.spin - mid_spin_[i]);

@@ -38,6 +38,7 @@
 
 #include "contact/contact_colours.hpp"
 #include "contact/contact_solver.hpp"
+#include "contact/restitution_energy.hpp"
 #include "contact/thread_choice.hpp"
 
 namespace flotsam {
@@ -124,6 +125,11 @@ class SoftStep final : public ContactSolver {
   void store(std::vector<ContactConstraint>& contacts, BodySet& bodies, bool threads);
   void relax(std::size_t w, int substep);
   void move_pose(int body);
+  struct BodyEnergy {         // one moving body's kinetic energies [J]
+    double before, mid, end;  // before the contacts, after the compression, at the end
+    RestitutionTerms change;  // its share of E(s)
+  };
+  BodyEnergy body_energy(int m) const;
   void bound_restitution();
   template <class F>
   void each_colour(F&& f);
@@ -151,7 +157,8 @@ class SoftStep final : public ContactSolver {
   // The velocities after the compression, before restitution (per body slot).
   std::vector<Vec2> mid_velocity_;
   std::vector<double> mid_spin_;
-  double largest_overlap_ = 0.0;  // [m]
+  std::vector<BodyEnergy> energy_;  // per moving body
+  double largest_overlap_ = 0.0;    // [m]
 };
 
 }  // namespace flotsam

@@ -5,6 +5,8 @@
 
 #include <omp.h>
 
+#include "core/parallel_for.hpp"
+
 // load() returns a 32-byte vector; it stays within this file, so the calling convention GCC
 // notes (AVX's differs from SSE2's) is never crossed.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -94,13 +96,7 @@ void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector
     lower_[k] = b.lower[axis], upper_[k] = b.upper[axis];
     other_lower_[k] = b.lower[other], other_upper_[k] = b.upper[other];
   };
-  const auto bounds = static_cast<long>(count);
-  if (parallel) {
-#pragma omp parallel for schedule(static)
-    for (long k = 0; k < bounds; ++k) copy_bounds(k);
-  } else {  // no parallel region: it costs about a microsecond even on one thread
-    for (long k = 0; k < bounds; ++k) copy_bounds(k);
-  }
+  parallel_for(static_cast<long>(count), static_cast<long>(parallel_boxes), copy_bounds);
   // The sweep in parallel: each thread sweeps a run of the order into its own list, and the
   // lists join in the order's order, the same pairs in the same order on any number of threads.
   const double *lower = lower_.data(), *upper = upper_.data();  // local: not reloaded per test

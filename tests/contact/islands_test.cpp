@@ -3,6 +3,7 @@
 #include "contact/islands.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <queue>
@@ -148,6 +149,39 @@ TEST(Islands, NumberingByTheBodiesGivesTheOrderOfGroup) {
     for (std::size_t m = 0; m < contacts.size(); ++m)  // the segment field numbers the contacts
       EXPECT_EQ(grouped[static_cast<std::size_t>(destination[m])].segment, contacts[m].segment);
   }
+}
+
+// From 2,000 contacts number() runs on the threads (a union-find joined by compare-and-swap): the
+// same islands and places as the definition gives, islands in the order of their first contact
+// and each keeping its contacts' order, on 1 and 2 threads.
+TEST(Islands, NumberingOnTheThreadsGivesTheDefinitionsOrder) {
+  const int n = 6000;
+  const std::vector<ContactConstraint> contacts = random_contacts(n, 5000, 3);
+  const std::vector<int> component = components(n, contacts);
+  std::vector<int> island_of_component(static_cast<std::size_t>(n), -1), size;
+  std::vector<int> island(contacts.size());
+  for (std::size_t m = 0; m < contacts.size(); ++m) {
+    int& k = island_of_component[static_cast<std::size_t>(component[contacts[m].a])];
+    if (k < 0) k = static_cast<int>(size.size()), size.push_back(0);
+    island[m] = k, ++size[static_cast<std::size_t>(k)];
+  }
+  std::vector<int> next(size.size() + 1, 0), expected(contacts.size());
+  for (std::size_t k = 0; k < size.size(); ++k) next[k + 1] = next[k] + size[k];
+  for (std::size_t m = 0; m < contacts.size(); ++m)
+    expected[m] = next[static_cast<std::size_t>(island[m])]++;
+  std::vector<BodyPair> ends;
+  for (const ContactConstraint& c : contacts) ends.emplace_back(c.a, c.b);
+  ASSERT_GT(size.size(), 100u);  // many islands, some of many contacts
+  ASSERT_GT(*std::max_element(size.begin(), size.end()), 10);
+  const int old_threads = omp_get_max_threads();
+  for (const int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    Islands islands;
+    const std::vector<int> destination = islands.number(ends, n);
+    EXPECT_EQ(islands.count(), static_cast<int>(size.size())) << threads << " threads";
+    EXPECT_EQ(destination, expected) << threads << " threads";
+  }
+  omp_set_num_threads(old_threads);
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 // A x_c = b_c (c = 0, 1): the u and v components of the momentum predictor (M-21). The vectors
 // are interleaved, entry 2 i + c holding component c of unknown i, so that every sweep reads the
 // matrix and the preconditioner once for both components (the predictor's time at 500k elements
-// is the memory traffic of those reads). Each component follows conjugate_gradients.hpp's
-// iteration and stops on its own tolerance; its updates are then frozen while the other goes on.
+// is the memory traffic of those reads). Each component follows the single-system iteration of
+// preconditioned conjugate gradients and stops on its own tolerance; its updates are then frozen
+// while the other goes on.
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <array>

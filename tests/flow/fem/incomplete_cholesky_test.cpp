@@ -11,7 +11,7 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
-#include "flow/fem/conjugate_gradients.hpp"
+#include "../../support/conjugate_gradients.hpp"
 #include "flow/fem/node_ordering.hpp"
 #include "flow/fem/pair_conjugate_gradients.hpp"
 

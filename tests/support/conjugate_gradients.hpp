@@ -1,6 +1,7 @@
 #pragma once
-// Preconditioned conjugate gradients for a symmetric positive definite A x = b with some entries
-// of x fixed (Dirichlet values; the momentum predictor (M-21) of the segregated step).
+// Preconditioned conjugate gradients for one symmetric positive definite A x = b with some entries
+// of x fixed (Dirichlet values): the reference that the segregated step's solve of u and v at once
+// (flow/fem/pair_conjugate_gradients.hpp) is checked against, component by component.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <vector>
