@@ -382,23 +382,15 @@ void ContactWorld::collide(const BodySet& bodies, const BoundarySegments& walls)
 // (ends_, b = -1 for a wall). Called by every thread of a parallel region, or outside one: each
 // thread counts the touching pairs of its run, then writes them where the runs before it end.
 void ContactWorld::keep_touching(int body_pairs) {
-  const auto pairs = touching_.size();
-  const auto threads = static_cast<std::size_t>(omp_get_num_threads());
-  const auto t = static_cast<std::size_t>(omp_get_thread_num());
-  const std::size_t begin = pairs * t / threads, end = pairs * (t + 1) / threads;
+  const auto [begin, end] = team_run(touching_.size());
   int touching = 0;
   for (std::size_t k = begin; k < end; ++k) touching += touching_[k];
-#pragma omp single
-  run_start_.assign(threads + 1, 0);
-  run_start_[t + 1] = touching;
-#pragma omp barrier
+  auto d = static_cast<std::size_t>(team_offset(run_start_, touching));
 #pragma omp single
   {
-    std::partial_sum(run_start_.begin(), run_start_.end(), run_start_.begin());
     kept_.resize(static_cast<std::size_t>(run_start_.back()));
     ends_.resize(kept_.size());
   }
-  auto d = static_cast<std::size_t>(run_start_[t]);
   for (std::size_t k = begin; k < end; ++k) {
     if (!touching_[k]) continue;
     const int pair = static_cast<int>(k);

@@ -7,6 +7,8 @@
 #include <limits>
 #include <numeric>
 
+#include "core/parallel_for.hpp"
+
 namespace flotsam {
 
 namespace {
@@ -66,10 +68,9 @@ const std::vector<int>& Islands::number(std::span<const BodyPair> ends, int body
 // numbered in the order of their first contact, and each keeps its contacts' order: the same
 // numbers and destinations on any number of threads.
 void Islands::number_in_team(std::span<const BodyPair> ends) {
-  const auto count = ends.size();
   const auto threads = static_cast<std::size_t>(omp_get_num_threads());
   const auto t = static_cast<std::size_t>(omp_get_thread_num());
-  const std::size_t begin = count * t / threads, end = count * (t + 1) / threads;
+  const auto [begin, end] = team_run(ends.size());
   constexpr int none = std::numeric_limits<int>::max();
   for (std::size_t m = begin; m < end; ++m) {  // each body its own tree, no contact yet
     for (const int i : {ends[m].first, ends[m].second}) {
@@ -99,14 +100,8 @@ void Islands::number_in_team(std::span<const BodyPair> ends) {
 #pragma omp barrier
   int firsts = 0;
   for (std::size_t m = begin; m < end; ++m) firsts += is_first(m);
-#pragma omp single
-  run_start_.assign(threads + 1, 0);
-  run_start_[t + 1] = firsts;
-#pragma omp barrier
-#pragma omp single
-  std::partial_sum(run_start_.begin(), run_start_.end(), run_start_.begin());
   // The islands numbered in the order of their first contacts.
-  int island = run_start_[t];
+  int island = team_offset(run_start_, firsts);
   for (std::size_t m = begin; m < end; ++m) {
     if (is_first(m)) island_of_root_[static_cast<std::size_t>(root_of_contact_[m])] = island++;
   }
