@@ -22,8 +22,12 @@ constexpr std::size_t parallel_contacts = 2000;
 
 using Lanes = SoftStep::Lanes;
 using Mask = SoftStep::Mask;
+using SmallMask = SoftStep::SmallMask;
 constexpr int lanes = SoftStep::lanes;
 
+Mask widen(SmallMask m) {
+  return __builtin_convertvector(m, Mask);
+}
 bool any(const Mask& m) {
   for (int l = 0; l < lanes; ++l)
     if (m[l]) return true;
@@ -64,8 +68,8 @@ Poses gather_poses(const SoftStep::Body* body, const std::array<int, lanes>& slo
   }
   return p;
 }
-void scatter_velocities(SoftStep::Body* body, const std::array<int, lanes>& slot,
-                        const Mask& movable, const Velocities& v) {
+void scatter_velocities(SoftStep::Body* body, const std::array<int, lanes>& slot, SmallMask movable,
+                        const Velocities& v) {
   for (int l = 0; l < lanes; ++l) {
     if (!movable[l]) continue;
     SoftStep::Body& b = body[slot[static_cast<std::size_t>(l)]];
@@ -125,6 +129,22 @@ void apply(const SoftStep::Wide& c, const SoftStep::WidePoint& q, const Lanes& p
   x[1] = both ? both1 : only_first ? zero : only_second ? second : none ? zero : old[1];
 }
 
+// The contacts of a Wide's lanes (k < 0: an empty lane) asked from memory ahead of their use
+// in colour order they are scattered over the contacts. Inlined: GCC takes a function of only
+// prefetches for one without effects and drops its calls.
+constexpr int ahead = 2;  // [Wides]
+[[gnu::always_inline]] inline void fetch_lanes(const std::vector<ContactConstraint>& contacts,
+                                               const std::vector<int>& order,
+                                               const int* lane_contact, bool for_write) {
+  for (int l = 0; l < lanes; ++l) {
+    const int k = lane_contact[l];
+    if (k < 0) continue;
+    const char* p = reinterpret_cast<const char*>(&contacts[static_cast<std::size_t>(order[k])]);
+    for (std::size_t b = 0; b < sizeof(ContactConstraint); b += 64)
+      for_write ? __builtin_prefetch(p + b, 1) : __builtin_prefetch(p + b, 0);
+  }
+}
+
 }  // namespace
 
 // The impulses a contact starts a sub-step from (sub-step 0: the first sub-step's of the last
@@ -151,7 +171,7 @@ void soft_warm_start(const SoftStep::Wide& c, SoftStep::Body* body,
     // P = lambda_n n + lambda_t t, t = -k x n = (n_y, -n_x)
     const Lanes px = q.normal_impulse * c.nx + q.tangent_impulse * c.ny;
     const Lanes py = q.normal_impulse * c.ny + q.tangent_impulse * (-c.nx);
-    apply(c, q, px, py, c.point[p], A, B);
+    apply(c, q, px, py, widen(c.point[p]), A, B);
   }
   scatter_velocities(body, c.a, c.movable_a, A);
   scatter_velocities(body, c.b, c.movable_b, B);
@@ -163,7 +183,7 @@ FLOTSAM_VECTOR_CLONES
 void soft_solve(SoftStep::Wide& c, const SoftStep::WideBlock& k, SoftStep::Body* body, bool bias) {
   Velocities A = gather_velocities(body, c.a), B = gather_velocities(body, c.b);
   const Poses PA = gather_poses(body, c.a), PB = gather_poses(body, c.b);
-  const Mask block = bias ? Mask{} : c.block;
+  const Mask block = bias ? Mask{} : widen(c.block);
   if (any(block)) {  // v_n to 0, or to -s/h_s at a gap
     Lanes target[2], vn[2], old[2], x[2];
     for (int p = 0; p < 2; ++p) {
@@ -185,7 +205,7 @@ void soft_solve(SoftStep::Wide& c, const SoftStep::WideBlock& k, SoftStep::Body*
   const Lanes max_push = broadcast(max_push_speed), one = broadcast(1.0);
   for (int p = 0; p < 2; ++p) {  // the other lanes' points one by one
     SoftStep::WidePoint& q = c.points[p];
-    const Mask m = c.point[p] & ~block;
+    const Mask m = widen(c.point[p]) & ~block;
     const Lanes s = separation(c, q, PA, PB);
     const Mask gap = s > 0.0;
     Lanes target{}, mass_scale = one, impulse_scale{};  // v* [m/s], [-], [-]
@@ -213,8 +233,9 @@ void soft_solve(SoftStep::Wide& c, const SoftStep::WideBlock& k, SoftStep::Body*
     const Lanes bound = c.friction * q.normal_impulse;  // [N s]
     const Lanes updated = min(max(q.tangent_impulse - q.tangent_mass * vt, -bound), bound);
     const Lanes d = updated - q.tangent_impulse;
-    q.tangent_impulse = c.point[p] ? updated : q.tangent_impulse;
-    apply(c, q, d * tx, d * ty, c.point[p], A, B);
+    const Mask m = widen(c.point[p]);
+    q.tangent_impulse = m ? updated : q.tangent_impulse;
+    apply(c, q, d * tx, d * ty, m, A, B);
   }
   scatter_velocities(body, c.a, c.movable_a, A);
   scatter_velocities(body, c.b, c.movable_b, B);
@@ -230,11 +251,11 @@ double soft_restitute(SoftStep::Wide& c, const SoftStep::WideBlock& k,
   const Poses PA = gather_poses(body, c.a), PB = gather_poses(body, c.b);
   Mask struck[2];
   for (int p = 0; p < 2; ++p)
-    struck[p] = c.point[p] & ~start[p].resting & (start[p].approach < -threshold) &
+    struck[p] = widen(c.point[p]) & ~start[p].resting & (start[p].approach < -threshold) &
                 (c.points[p].largest_normal > 0.0);
   // Two points struck together are restituted at once (one after the other, the second would
   // undo part of the first: a log meeting another end to end would leave spinning).
-  const Mask block = c.block & struck[0] & struck[1];
+  const Mask block = widen(c.block) & struck[0] & struck[1];
   if (any(block)) {
     Lanes target[2], vn[2], old[2], x[2];
     for (int p = 0; p < 2; ++p) {
@@ -282,8 +303,21 @@ void SoftStep::each_colour(F&& f) {
       for (int w = begin; w < end; ++w) f(static_cast<std::size_t>(w));
     } else {
 #pragma omp for schedule(static)
-      for (int w = begin; w < end; ++w) f(static_cast<std::size_t>(w));
+      for (int w = begin; w < end; ++w) {
+        if (w + ahead < end) fetch_bodies(wide_[static_cast<std::size_t>(w + ahead)]);
+        f(static_cast<std::size_t>(w));
+      }
     }
+  }
+}
+
+// The bodies of a Wide's lanes asked from memory ahead of their use (a colour's bodies are
+// scattered over the bodies).
+void SoftStep::fetch_bodies(const Wide& c) const {
+  for (int l = 0; l < lanes; ++l) {
+    const std::size_t lane = static_cast<std::size_t>(l);
+    __builtin_prefetch(&body_[c.a[lane]], 1), __builtin_prefetch(&body_[c.b[lane]], 1);
+    __builtin_prefetch(&body_step_[c.a[lane]]), __builtin_prefetch(&body_step_[c.b[lane]]);
   }
 }
 
@@ -448,6 +482,8 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       WideBlock& block = block_[w];
       std::array<WideStart, 2>& first = start_[w];
       c = Wide{}, block = WideBlock{}, first = {};
+      if (w + ahead < wides)
+        fetch_lanes(contacts, order, &lane_contact_[lanes * (w + ahead)], false);
       for (int l = 0; l < lanes; ++l) {
         const std::size_t lane = static_cast<std::size_t>(l);
         const int k = lane_contact_[static_cast<std::size_t>(lanes * w + l)];
@@ -529,7 +565,7 @@ void SoftStep::relax(std::size_t w, int substep) {
   soft_solve(c, block_[w], body_.data(), false);
   for (int p = 0; p < 2; ++p) {
     WidePoint& q = c.points[p];
-    const Mask m = c.point[p];
+    const Mask m = widen(c.point[p]);
     q.total_normal = m ? q.total_normal + q.normal_impulse : q.total_normal;
     q.total_tangent = m ? q.total_tangent + q.tangent_impulse : q.total_tangent;
     if (substep == 0) {
@@ -586,6 +622,8 @@ void SoftStep::store(std::vector<ContactConstraint>& contacts, BodySet& bodies, 
 #pragma omp for schedule(static) nowait
     for (int w = 0; w < wides; ++w) {
       const Wide& c = wide_[static_cast<std::size_t>(w)];
+      if (w + ahead < wides)
+        fetch_lanes(contacts, order, &lane_contact_[lanes * (w + ahead)], true);
       for (int l = 0; l < lanes; ++l) {
         const int k = lane_contact_[static_cast<std::size_t>(lanes * w + l)];
         if (k < 0) continue;

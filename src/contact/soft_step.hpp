@@ -73,6 +73,7 @@ class SoftStep final : public ContactSolver {
   // Aligned to their size whatever the instruction set (without AVX, GCC would align them to 16).
   using Lanes = double __attribute__((vector_size(lanes * sizeof(double)), aligned(32)));
   using Mask = long long __attribute__((vector_size(lanes * sizeof(long long)), aligned(32)));
+  using SmallMask = signed char __attribute__((vector_size(lanes)));  // a Mask's lanes, 0 or -1
   struct alignas(64) Body {
     Vec2 velocity = Vec2::Zero();   // u [m/s]
     double spin = 0.0;              // omega [rad/s]
@@ -88,16 +89,16 @@ class SoftStep final : public ContactSolver {
     Lanes total_normal, total_tangent;      // over the interval [N s]
   };
   struct alignas(64) Wide {
-    std::array<int, lanes> a, b;      // body slots; a wall (and an empty lane) is the last slot
-    Mask point[2];                    // the lane has point p
-    Mask block;                       // two points relaxed and restituted at once
-    Mask first_of_a, first_of_b;      // the body's first contact in colour order
-    Mask movable_a, movable_b;        // 1/m or 1/I > 0
-    Lanes nx, ny;                     // n
-    Lanes friction;                   // mu_c [-]
-    Lanes inverse_substep;            // 1 / h_s [1/s]
-    Lanes bias_rate;                  // b [1/s]
-    Lanes mass_scale, impulse_scale;  // a/(1+a), 1/(1+a) [-]
+    std::array<int, lanes> a, b;       // body slots; a wall (and an empty lane) is the last slot
+    SmallMask point[2];                // the lane has point p
+    SmallMask block;                   // two points relaxed and restituted at once
+    SmallMask first_of_a, first_of_b;  // the body's first contact in colour order
+    SmallMask movable_a, movable_b;    // 1/m or 1/I > 0
+    Lanes nx, ny;                      // n
+    Lanes friction;                    // mu_c [-]
+    Lanes inverse_substep;             // 1 / h_s [1/s]
+    Lanes bias_rate;                   // b [1/s]
+    Lanes mass_scale, impulse_scale;   // a/(1+a), 1/(1+a) [-]
     Lanes inverse_mass_a, inverse_mass_b;        // [1/kg]
     Lanes inverse_inertia_a, inverse_inertia_b;  // [1/(kg m^2)]
     WidePoint points[2];
@@ -133,6 +134,7 @@ class SoftStep final : public ContactSolver {
   void bound_restitution();
   template <class F>
   void each_colour(F&& f);
+  [[gnu::always_inline]] inline void fetch_bodies(const Wide& c) const;
 
   ContactConfig config_;
   ContactColours colours_;

@@ -1,7 +1,10 @@
 #include "contact/sweep_and_prune.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <numeric>
 
 #include <omp.h>
 
@@ -97,36 +100,16 @@ void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector
     other_lower_[k] = b.lower[other], other_upper_[k] = b.upper[other];
   };
   parallel_for(static_cast<long>(count), static_cast<long>(parallel_boxes), copy_bounds);
+  list_in_bands();
   // The sweep in parallel: each thread sweeps a run of the order into its own list, and the
   // lists join in the order's order, the same pairs in the same order on any number of threads.
-  const double *lower = lower_.data(), *upper = upper_.data();  // local: not reloaded per test
-  const double *other_lower = other_lower_.data(), *other_upper = other_upper_.data();
-  const int* order = order_.data();
-  // Four boxes at a time while the fourth is open (the lower bounds ascend, so then all four
-  // are), the rest one by one: the pairs in the same order either way.
-  const auto sweep = [=](std::size_t begin, std::size_t end_k, std::vector<BodyPair>& found) {
-    for (std::size_t k = begin; k < end_k; ++k) {
-      const double end = upper[k], lo = other_lower[k], hi = other_upper[k];
-      const int i = order[k];
-      std::size_t m = k + 1;
-      for (; m + 4 <= count && lower[m + 3] <= end; m += 4) {
-        const Mask hit = (load(other_lower + m) <= hi) & (lo <= load(other_upper + m));
-        for (std::size_t l = 0; l < 4; ++l) {
-          if (!hit[l]) continue;
-          const int j = order[m + l];
-          found.emplace_back(std::min(i, j), std::max(i, j));
-        }
-      }
-      for (; m < count && lower[m] <= end; ++m) {
-        if (other_lower[m] <= hi && lo <= other_upper[m]) {
-          const int j = order[m];
-          found.emplace_back(std::min(i, j), std::max(i, j));
-        }
-      }
-    }
+  const auto sweep = [this](std::size_t begin, std::size_t end, std::vector<BodyPair>& found,
+                            std::vector<int>& partners) {
+    for (std::size_t k = begin; k < end; ++k) sweep_box(k, found, partners);
   };
   if (!parallel) {
-    sweep(0, count, pairs);
+    runs_.resize(1);
+    sweep(0, count, pairs, runs_[0].partners);
     return;
   }
   runs_.resize(static_cast<std::size_t>(omp_get_max_threads()));
@@ -134,17 +117,105 @@ void SweepAndPrune::find_pairs(const std::vector<Aabb>& boxes, const std::vector
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const auto threads = static_cast<std::size_t>(omp_get_num_threads());
-    runs_[t].clear();
-    sweep(count * t / threads, count * (t + 1) / threads, runs_[t]);
+    runs_[t].pairs.clear();
+    sweep(count * t / threads, count * (t + 1) / threads, runs_[t].pairs, runs_[t].partners);
 #pragma omp barrier
 #pragma omp single
     {
       std::size_t total = 0;
-      for (std::size_t r = 0; r < threads; ++r) total += runs_[r].size();
+      for (std::size_t r = 0; r < threads; ++r) total += runs_[r].pairs.size();
       pairs.reserve(total);
       for (std::size_t r = 0; r < threads; ++r)
-        pairs.insert(pairs.end(), runs_[r].begin(), runs_[r].end());
+        pairs.insert(pairs.end(), runs_[r].pairs.begin(), runs_[r].pairs.end());
     }
+  }
+}
+
+// Bands across the other axis, about twice the boxes' mean extent along it wide (and at most one
+// per 32 boxes); each box is listed, in the order's order, in every band it spans, with its
+// bounds copied contiguously for the sweep.
+void SweepAndPrune::list_in_bands() {
+  const std::size_t count = order_.size();
+  double low = std::numeric_limits<double>::infinity(), high = -low, extent = 0.0;  // [m]
+  for (std::size_t k = 0; k < count; ++k) {
+    low = std::min(low, other_lower_[k]), high = std::max(high, other_upper_[k]);
+    extent += other_upper_[k] - other_lower_[k];
+  }
+  constexpr double width_per_extent = 2.0;  // [-] band width / mean extent
+  constexpr std::size_t boxes_per_band = 32;
+  const double span = high - low;  // [m]
+  const double most = static_cast<double>(std::max<std::size_t>(1, count / boxes_per_band));
+  const double width =
+      std::max(width_per_extent * extent / static_cast<double>(count), span / most);
+  const double bands = std::isfinite(span) && width > 0.0 ? std::ceil(span / width) : 1.0;
+  band_low_ = low;
+  band_count_ = static_cast<int>(std::clamp(bands, 1.0, most));
+  band_scale_ = band_count_ > 1 ? band_count_ / span : 0.0;  // [1/m]
+
+  // Counting sort of the boxes' entries by band, stable in the order.
+  band_start_.assign(static_cast<std::size_t>(band_count_) + 1, 0);
+  first_band_.resize(count + 1);
+  entry_start_.resize(count + 1);
+  entry_start_[0] = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const int first = band_of(other_lower_[k]), last = band_of(other_upper_[k]);
+    first_band_[k] = first;
+    for (int b = first; b <= last; ++b) ++band_start_[static_cast<std::size_t>(b) + 1];
+    entry_start_[k + 1] = entry_start_[k] + (last - first + 1);
+  }
+  std::partial_sum(band_start_.begin(), band_start_.end(), band_start_.begin());
+  const auto entries = static_cast<std::size_t>(band_start_.back());
+  member_.resize(entries), position_.resize(entries);
+  band_lower_.resize(entries), band_other_lower_.resize(entries), band_other_upper_.resize(entries);
+  fill_.assign(band_start_.begin(), band_start_.end() - 1);
+  for (std::size_t k = 0; k < count; ++k) {
+    for (int e = entry_start_[k]; e < entry_start_[k + 1]; ++e) {
+      const int b = first_band_[k] + (e - entry_start_[k]);
+      const int at = fill_[static_cast<std::size_t>(b)]++;
+      position_[static_cast<std::size_t>(e)] = at;
+      member_[static_cast<std::size_t>(at)] = static_cast<int>(k);
+      band_lower_[at] = lower_[k];
+      band_other_lower_[at] = other_lower_[k], band_other_upper_[at] = other_upper_[k];
+    }
+  }
+}
+
+int SweepAndPrune::band_of(double v) const {
+  const double t = (v - band_low_) * band_scale_;  // [-]
+  if (!(t > 0.0)) return 0;                        // NaN too
+  return t >= band_count_ - 1 ? band_count_ - 1 : static_cast<int>(t);
+}
+
+// The pairs of box k with the boxes after it in the order (Lanes: four at a time while the fourth
+// is open, as the lower bounds ascend), in every band of k's; a pair that shares two bands is
+// taken in the one where their overlap along the other axis starts. Appended to `found` in the
+// order's order, the same list as one sweep over all the boxes gives.
+void SweepAndPrune::sweep_box(std::size_t k, std::vector<BodyPair>& found,
+                              std::vector<int>& partners) const {
+  const double end = upper_[k], lo = other_lower_[k], hi = other_upper_[k];
+  const double* lower = band_lower_.data();  // local: not reloaded per test
+  const double *other_lower = band_other_lower_.data(), *other_upper = band_other_upper_.data();
+  partners.clear();
+  for (int e = entry_start_[k]; e < entry_start_[k + 1]; ++e) {
+    const int b = first_band_[k] + (e - entry_start_[k]);
+    const auto stop = static_cast<std::size_t>(band_start_[static_cast<std::size_t>(b) + 1]);
+    const auto take = [&](std::size_t m) {
+      if (band_of(std::max(lo, other_lower[m])) == b) partners.push_back(member_[m]);
+    };
+    std::size_t m = static_cast<std::size_t>(position_[static_cast<std::size_t>(e)]) + 1;
+    for (; m + 4 <= stop && lower[m + 3] <= end; m += 4) {
+      const Mask hit = (load(other_lower + m) <= hi) & (lo <= load(other_upper + m));
+      for (std::size_t l = 0; l < 4; ++l)
+        if (hit[l]) take(m + l);
+    }
+    for (; m < stop && lower[m] <= end; ++m)
+      if (other_lower[m] <= hi && lo <= other_upper[m]) take(m);
+  }
+  if (entry_start_[k + 1] - entry_start_[k] > 1) std::sort(partners.begin(), partners.end());
+  const int i = order_[k];
+  for (const int m : partners) {
+    const int j = order_[static_cast<std::size_t>(m)];
+    found.emplace_back(std::min(i, j), std::max(i, j));
   }
 }
 

@@ -7,6 +7,12 @@
 //     for m after k while lower[axis][m] <= upper[axis][k]:  boxes open on the sweep axis
 //       if the boxes overlap on the other axis: emit (k, m)
 //
+// The sweep meets only the boxes of k's bands: strips across the other axis about two boxes wide,
+// in which each box is listed in the order's order (a jam across a wide river then does not test
+// every log of its row). A pair that shares two bands is emitted in the one where its overlap
+// starts, and box k's partners in the order's order, so the pairs are those of one sweep, in its
+// order.
+//
 // The sweep axis is the one along which the boxes' centres spread most (a jam in a river is long
 // along the flow); when it changes, the order is sorted afresh. brute_force_pairs() tests every
 // pair and returns the same set: tests and benchmarks compare the two.
@@ -51,9 +57,25 @@ class SweepAndPrune {
   std::vector<char> in_order_;  // 1 for the indices in order_
   int axis_ = 0;                // 0: x, 1: y
   long swaps_ = 0;
-  // Sorted copies of the bounds, contiguous for the sweep.
+  void list_in_bands();
+  int band_of(double other) const;  // the band of a coordinate along the other axis
+  void sweep_box(std::size_t k, std::vector<BodyPair>& found, std::vector<int>& partners) const;
+
+  // Sorted copies of the bounds (k: the place in order_).
   std::vector<double> lower_, upper_, other_lower_, other_upper_;
-  std::vector<std::vector<BodyPair>> runs_;  // each thread's pairs of its run of the sweep
+  // Bands: band b's entries are band_start_[b] to band_start_[b + 1] - 1, each an order place
+  // (member_) with its bounds, contiguous for the sweep; box k's entries in its bands
+  // first_band_[k], first_band_[k] + 1, ... are at position_[entry_start_[k]],
+  // position_[entry_start_[k] + 1], ...
+  double band_low_ = 0.0, band_scale_ = 0.0;  // [m], [1/m]: band = (other - low) * scale
+  int band_count_ = 1;
+  std::vector<int> band_start_, fill_, first_band_, entry_start_, member_, position_;
+  std::vector<double> band_lower_, band_other_lower_, band_other_upper_;
+  struct Run {  // a thread's run of the sweep
+    std::vector<BodyPair> pairs;
+    std::vector<int> partners;  // of one box
+  };
+  std::vector<Run> runs_;
 };
 
 /// Every overlapping pair (i < j) of active boxes by testing all pairs: O(N^2), the reference.

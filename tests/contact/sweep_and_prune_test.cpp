@@ -131,6 +131,47 @@ TEST(SweepAndPrune, ListedGroupsInTurnGiveTheBruteForcePairs) {
   }
 }
 
+// The sweep meets only the boxes of each box's bands (sweep_and_prune.hpp): on a wide jam whose
+// boxes span one to many bands, and on boxes lying exactly on the bands' edges, it emits the
+// pairs of one plain sweep over its order, in that sweep's order (the contacts, and so the
+// solve's bits, follow it).
+TEST(SweepAndPrune, BandsGiveThePairsOfOnePlainSweepInItsOrder) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double long_side : {2.0, 20.0, 400.0}) {  // [m] up to most of the other axis
+    SCOPED_TRACE(::testing::Message() << "long side " << long_side);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 6000; ++i) {  // spread along x (the sweep axis), 500 m across y
+      const Vec2 c(5000.0 * unit(rng), 500.0 * unit(rng));
+      const Vec2 h = unit(rng) < 0.5 ? Vec2(0.5, 0.5 * long_side) : Vec2(0.5 * long_side, 0.5);
+      boxes.push_back({c - h, c + h});
+    }
+    for (int i = 0; i < 200; ++i) boxes.push_back({Vec2(2.0 * i, 0.0), Vec2(2.0 * i + 4.0, 250.0)});
+    const std::vector<char> active(boxes.size(), 1);
+    for (int threads = 1; threads <= 2; ++threads) {
+      const int before = omp_get_max_threads();
+      omp_set_num_threads(threads);
+      SweepAndPrune sweep;
+      std::vector<BodyPair> found;
+      sweep.find_pairs(boxes, active, found);
+      omp_set_num_threads(before);
+      ASSERT_EQ(sweep.axis(), 0);
+      std::vector<BodyPair> plain;  // for k in order, for m after k while open: (k, m)
+      const std::vector<int>& order = sweep.order();
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        const Aabb& a = boxes[order[k]];
+        for (std::size_t m = k + 1; m < order.size() && boxes[order[m]].lower.x() <= a.upper.x();
+             ++m) {
+          if (a.overlaps(boxes[order[m]]))
+            plain.emplace_back(std::min(order[k], order[m]), std::max(order[k], order[m]));
+        }
+      }
+      EXPECT_GT(plain.size(), 1000u);
+      EXPECT_EQ(found, plain);
+    }
+  }
+}
+
 TEST(SweepAndPrune, ExactlyTouchingNeighboursAreInContact) {
   // 100 x 100 lattice of 4 m x 1 m boxes: each touches its neighbours along whole edges.
   const BodySet bodies = make_bodies({"touching", 0.0, false, true}, 10000, 1);
