@@ -69,7 +69,6 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
   const int N = std::max(1, model.physics.drag_points);
   for (int slice = 0; slice < N; ++slice) {
     if (N == 1) {
-      B.at_point = B.at_G;
       for (int k = 0; k < W; ++k) {
         B.point_x[k] = y.c[0][k], B.point_y[k] = y.c[1][k];
         B.fraction[k] = 1.0;
@@ -88,8 +87,8 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
       }
       flow.sample_batch(B.point_x, B.point_y, t, sampled, hints, B.at_point);
     }
-    add_slice_drag(B.bodies, B.at_point, B.point_x, B.point_y, B.fraction, y, B.axis_x, B.axis_y,
-                   model, drag);
+    add_slice_drag(B.bodies, N == 1 ? B.at_G : B.at_point, B.point_x, B.point_y, B.fraction, y,
+                   B.axis_x, B.axis_y, model, drag);
   }
 
   // (M-5): the floating lanes here, the grounded ones in body_motion.cpp's finish_derivative.
@@ -168,7 +167,10 @@ void advance_batch(BodySet& bodies, const int* list, int n, const FlowField& flo
   BodyLoads loads[W];
   alignas(64) Lanes t = {}, h = {}, t_stage = {}, step = {}, h_try = {};
   bool done[W], need_k1[W], active[W], lands[W];
+  // Written lane by lane before they are read, but for k1 in the lanes past n, which are never
+  // active: zero, so that every lane computes on numbers.
   BatchVector y, k[6], y_stage, dy, y5, err;
+  k[0] = BatchVector{};
   for (int j = 0; j < W; ++j) {
     const int i = B.bodies.index[j];
     options[j] = body_step_options(bodies, i, model, min_step_fraction, ta, tb, step_span);

@@ -58,7 +58,7 @@ struct alignas(64) BatchBodies {
 
 /// A state (x_G, y_G, theta, u_x, u_y, omega) or a derivative per lane.
 struct alignas(64) BatchVector {
-  alignas(64) double c[6][batch_width] = {};  // zero: idle lanes compute on numbers
+  alignas(64) double c[6][batch_width];  // not zeroed: `BatchVector v{}` for zeros
 };
 
 /// The drag of a batch (force and moment about G), summed over drag points.

@@ -74,7 +74,7 @@ TEST(BodyBatch, DerivativeAndLoadsAgreeWithTheScalarLawsOverRandomBodiesAndFlows
     const BodySet bodies = random_bodies(random, batch_width);
     int list[batch_width], hints[batch_width];
     Lanes t;
-    BatchVector y, dy;
+    BatchVector y{}, dy{};
     BodyLoads loads[batch_width];
     for (int k = 0; k < batch_width; ++k) {
       list[k] = k;
@@ -127,7 +127,7 @@ TEST(BodyBatch, ABodysResultDoesNotDependOnItsBatchMates) {
   const BodySet bodies = random_bodies(random, batch_width);
   int list[batch_width], hints[batch_width];
   Lanes t;
-  BatchVector y, dy, dy_alone;
+  BatchVector y{}, dy{}, dy_alone{};
   for (int k = 0; k < batch_width; ++k) {
     list[k] = k;
     hints[k] = -1;
@@ -138,7 +138,7 @@ TEST(BodyBatch, ABodysResultDoesNotDependOnItsBatchMates) {
   batch_derivative(bodies, list, batch_width, flow, model, t, y, hints, dy);
   for (int k = 0; k < batch_width; ++k) {
     int one[batch_width] = {k}, hint[batch_width] = {-1};
-    BatchVector y_one;
+    BatchVector y_one{};
     for (int c = 0; c < 6; ++c) y_one.c[c][0] = y.c[c][k];
     batch_derivative(bodies, one, 1, flow, model, t, y_one, hint, dy_alone);
     for (int c = 0; c < 6; ++c) EXPECT_EQ(dy_alone.c[c][0], dy.c[c][k]) << k << " " << c;
