@@ -61,6 +61,7 @@ void BodyIntegrator::advance_bodies(BodySet& bodies, const std::vector<int>& lis
   // The bodies that move, in batches (batch_integration.hpp) unless the one-body path is asked
   // for; anchored bodies one at a time.
   std::vector<int> single, batched;
+  batched.reserve(list.size());
   for (const int i : list) {
     if (bodies.state[i] == BodyState::gone) continue;
     (options_.batch && !bodies.anchored[i] ? batched : single).push_back(i);
@@ -102,7 +103,10 @@ IntegrationStats BodyIntegrator::advance(BodySet& bodies, const FlowField& flow,
   IntegrationStats stats;
   stats.contact_intervals = 1;
   advance_bodies(bodies, schedule.free, flow, t0, t1, t1 - t0, stats);
-  std::vector<double> last_interval(static_cast<std::size_t>(bodies.size()), t1 - t0);  // [s]
+  // h per body of its last interval [s], where the groups' intervals make them differ.
+  std::vector<double> last_interval;
+  if (!schedule.groups.empty())
+    last_interval.assign(static_cast<std::size_t>(bodies.size()), t1 - t0);
   for (const ContactGroup& group : schedule.groups) {
     const int K = group.intervals;
     stats.contact_intervals = std::max(stats.contact_intervals, K);
@@ -118,7 +122,9 @@ IntegrationStats BodyIntegrator::advance(BodySet& bodies, const FlowField& flow,
   }
   stats.linked = static_cast<int>(schedule.at_end.size());
   if (hook && !schedule.at_end.empty())
-    hook(ContactInterval{t1, t1 - t0, &schedule.at_end, &last_interval}, bodies);
+    hook(ContactInterval{t1, t1 - t0, &schedule.at_end,
+                         last_interval.empty() ? nullptr : &last_interval},
+         bodies);
   return stats;
 }
 
