@@ -78,15 +78,19 @@ demo: deps $(BUILD)/build.ninja
 	$(BUILD)/flotsam run examples/bridge_piers.yaml --overwrite
 	$(BUILD)/flotsam render out/bridge_piers
 
-# Benchmarks: the Google Benchmark programs in bench/, the flow engines' timed harnesses (about 5
-# minutes, most of it the FEM's hour of the paper's channel), then timed runs of the examples, the
-# two bridge cases also with the finite-volume engine (results under build/bench_runs/, replaced
-# each time). Figures go to docs/performance.md.
+# Benchmarks: the Google Benchmark programs in bench/, the contacts against Box2D (about 3 minutes),
+# the flow engines' timed harnesses (about 5 minutes, most of it the FEM's hour of the paper's
+# channel), then timed runs of the examples, the two bridge cases also with the finite-volume
+# engine (results under build/bench_runs/, replaced each time). Figures go to docs/performance.md.
 bench: build
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	@for b in $(BUILD)/bench/bench_*; do \
-	    case $$b in */bench_flow_channel|*/bench_fv_dam_break) continue;; esac; \
+	    case $$b in */bench_flow_channel|*/bench_fv_dam_break|*/bench_contacts_vs_box2d) continue;; esac; \
 	    echo "== $$b"; $$b --benchmark_min_time=0.5; done
+	@echo "== contacts against Box2D (docs/performance.md): both solvers at 1k and 10k logs, the soft"
+	@echo "   step at 50k; ratios flotsam / Box2D from the same run"
+	$(BUILD)/bench/bench_contacts_vs_box2d 1000 10000
+	$(BUILD)/bench/bench_contacts_vs_box2d 50000 --no-sequential
 	@echo "== FEM engine (docs/performance.md): time per step, steady mode at Re = 20 and at the"
 	@echo "   case's Re = 1000 with the paper's mixing length, 1 h at dt = 1 s"
 	$(BUILD)/bench/bench_flow_channel scaling 14.5 40 1

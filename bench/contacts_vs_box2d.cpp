@@ -207,6 +207,13 @@ Result run_box2d(JamScene scene, int warm_up, int timed, bool sleep) {
 // case file's default: docs/model.md "Sleeping islands"), else every body is solved every step;
 // `--warm-up N`: N steps before the timed ones (default 100); `--no-box2d` leaves out Box2D (to
 // compare two builds of flotsam: no ratios then).
+// A positive integer of at most 9 digits (a log count or a number of steps).
+static bool positive(const char* text) {
+  const std::string t(text);
+  return !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string::npos &&
+         std::stoi(t) > 0;
+}
+
 int main(int argc, char** argv) {
   using namespace flotsam;
   std::vector<int> counts;
@@ -219,10 +226,16 @@ int main(int argc, char** argv) {
       box2d = false;
     } else if (std::string(argv[k]) == "--sleep") {
       sleep = true;
-    } else if (std::string(argv[k]) == "--warm-up" && k + 1 < argc) {
+    } else if (std::string(argv[k]) == "--warm-up" && k + 1 < argc && positive(argv[k + 1])) {
       warm_up = std::stoi(argv[++k]);
-    } else {
+    } else if (positive(argv[k])) {
       counts.push_back(std::stoi(argv[k]));
+    } else {
+      std::fprintf(stderr,
+                   "bench_contacts_vs_box2d: '%s' is not a log count (a positive integer) or one "
+                   "of --no-sequential, --no-box2d, --sleep, --warm-up N\n",
+                   argv[k]);
+      return 2;
     }
   }
   if (counts.empty()) counts = {1000, 10000, 50000};
