@@ -24,6 +24,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "contact/contact_world.hpp"
@@ -240,7 +241,7 @@ int main(int argc, char** argv) {
   }
   if (counts.empty()) counts = {1000, 10000, 50000};
   std::printf("sleeping %s\n", sleep ? "on" : "off");
-  std::printf("%7s %-8s %12s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "cpu ms/step",
+  std::printf("%7s %-10s %12s %12s %14s %14s %11s\n", "logs", "engine", "ms/step", "cpu ms/step",
               "largest [mm]", "p99 [mm]", "past piers");
   for (const int n : counts) {
     JamSceneSpec spec;
@@ -254,17 +255,22 @@ int main(int argc, char** argv) {
                                               ContactSolverKind::sequential_impulses, sleep)
                                 : Result{};
     const Result s = run_flotsam(scene, warm_up, timed, ContactSolverKind::soft_step, sleep);
-    for (const auto& [name, r] :
-         {std::pair{"box2d", b}, std::pair{"flotsam", f}, std::pair{"soft", s}}) {
-      std::printf("%7d %-8s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
+    // The engines that ran, then flotsam's solvers relative to Box2D.
+    for (const auto& [name, r, ran] :
+         {std::tuple{"box2d", b, box2d}, std::tuple{"sequential", f, sequential},
+          std::tuple{"soft", s, true}}) {
+      if (!ran) continue;
+      std::printf("%7d %-10s %12.2f %12.2f %14.2f %14.2f %11d\n", n, name, r.ms_per_step,
                   r.cpu_ms_per_step, 1e3 * r.largest, 1e3 * r.percentile_99, r.past_piers);
     }
     const auto ratio = [&](double x, double y) {  // nan without Box2D
       return box2d ? x / y : std::numeric_limits<double>::quiet_NaN();
     };
-    for (const auto& [name, r] : {std::pair{"flotsam", f}, std::pair{"soft", s}}) {
+    for (const auto& [name, r, ran] :
+         {std::tuple{"sequential", f, sequential}, std::tuple{"soft", s, true}}) {
+      if (!ran) continue;
       std::printf(
-          "%7d %-8s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f asleep, %.0f "
+          "%7d %-10s %12.2f %12.2f %14.2f %14.2f   (/ box2d; %.0f islands, %.0f asleep, %.0f "
           "velocity sweeps per step, %.0f %% of steps solved twice; last solve per step: "
           "detection %.2f ms (pairs %.2f), solver %.2f ms, positions %.2f ms; final state "
           "%016llx)\n",
