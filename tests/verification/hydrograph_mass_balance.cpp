@@ -6,12 +6,11 @@
 // theta-scheme); and the volume that entered is the integral of the imposed discharge by the
 // time scheme's rule (BDF2: dt Q(t^{n+1}) per step; theta-scheme: the theta-weighted one) within
 // 1e-6 relative (the inflow velocities are set from the depth of the last Newton iterate, so the
-// imposed flux is exact to the Newton tolerance 1e-6). Both time schemes.
+// imposed flux is exact to the Newton tolerance 1e-6). Both time schemes, with either step.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "../support/flow_schemes.hpp"
 #include "../support/straight_channel.hpp"
 #include "../support/time_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
@@ -20,13 +19,7 @@
 namespace flotsam {
 namespace {
 
-// The coupled step with either time scheme, and the segregated step (theta-scheme).
-struct Schemes {
-  FlowScheme flow;
-  TimeScheme time;
-};
-
-class HydrographMassBalance : public testing::TestWithParam<Schemes> {};
+class HydrographMassBalance : public testing::TestWithParam<test::StepAndTime> {};
 
 TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 500.0, 40.0, 25, 4, true});
@@ -54,14 +47,8 @@ TEST_P(HydrographMassBalance, VolumeBalancesToRoundOff) {
               balance.relative_error(), entered, inflow, balance.lag);
 }
 
-INSTANTIATE_TEST_SUITE_P(Schemes, HydrographMassBalance,
-                         testing::Values(Schemes{FlowScheme::coupled, TimeScheme::theta},
-                                         Schemes{FlowScheme::coupled, TimeScheme::bdf2},
-                                         Schemes{FlowScheme::segregated, TimeScheme::theta}),
-                         [](const testing::TestParamInfo<Schemes>& p) {
-                           return test::scheme_name(p.param.flow) + "_" +
-                                  test::scheme_name(p.param.time);
-                         });
+INSTANTIATE_TEST_SUITE_P(Schemes, HydrographMassBalance, test::all_steps_and_times,
+                         test::step_and_time_name);
 
 }  // namespace
 }  // namespace flotsam

@@ -3,15 +3,14 @@
 // enters). Uniform oblique flow u = (1, 0.3) m/s over a flat bed, depth 2 m, no friction, is an
 // exact steady solution of (M-1): it enters through the left and bottom sides (velocity
 // imposed), leaves through the top (velocity imposed) and through the right side, where only
-// eta = 2 m is imposed. Started from that solution, 20 steps of 2 s (both time schemes, with
-// characteristics, and the segregated step) must keep it: max |u - (1, 0.3)| <= 1e-9 m/s and max
+// eta = 2 m is imposed. Started from that solution, 20 steps of 2 s (both time schemes with
+// characteristics, with either step) must keep it: max |u - (1, 0.3)| <= 1e-9 m/s and max
 // |eta - 2| <= 1e-9 m. Holding u . t = 0 at the right side too would force v = 0 there, an error of
 // 0.3 m/s.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "../support/flow_schemes.hpp"
 #include "../support/time_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -19,13 +18,7 @@
 namespace flotsam {
 namespace {
 
-// The coupled step with either time scheme, and the segregated step (theta-scheme).
-struct Schemes {
-  FlowScheme flow;
-  TimeScheme time;
-};
-
-class ObliqueFlow : public testing::TestWithParam<Schemes> {};
+class ObliqueFlow : public testing::TestWithParam<test::StepAndTime> {};
 
 TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   const double U = 1.0, V = 0.3, H = 2.0;  // [m/s], [m/s], [m]
@@ -55,14 +48,7 @@ TEST_P(ObliqueFlow, LeavesThroughAnElevationBoundaryUnchanged) {
   std::printf("oblique flow: max |u - U| %.2e m/s, max |eta - H| %.2e m\n", du, deta);
 }
 
-INSTANTIATE_TEST_SUITE_P(Schemes, ObliqueFlow,
-                         testing::Values(Schemes{FlowScheme::coupled, TimeScheme::theta},
-                                         Schemes{FlowScheme::coupled, TimeScheme::bdf2},
-                                         Schemes{FlowScheme::segregated, TimeScheme::theta}),
-                         [](const testing::TestParamInfo<Schemes>& p) {
-                           return test::scheme_name(p.param.flow) + "_" +
-                                  test::scheme_name(p.param.time);
-                         });
+INSTANTIATE_TEST_SUITE_P(Schemes, ObliqueFlow, test::all_steps_and_times, test::step_and_time_name);
 
 }  // namespace
 }  // namespace flotsam

@@ -38,9 +38,11 @@ constexpr double predictor_tolerance = 1e-8;
 // with theta > 1/2 the gravity waves moving with the current are damped only while s < 1/2 (at
 // 1/2 the bump of subcritical_bump.cpp does not settle; at 0.48 it settles 1.2 % from Bernoulli,
 // against 0.8 % at 0.4). Halfway, s = 3/4 - theta/2 (0.45 at theta = 0.6, 1/2 at theta = 1/2),
-// halves that error and keeps the damping (docs/model.md "The segregated step"). [-]
-double slope_at_feet(double theta) {
-  return 0.75 - 0.5 * theta;
+// halves that error and keeps the damping (docs/model.md "The segregated step"). BDF2 takes every
+// term at t^{n+1} at the node (its time derivative along the path is second order by itself):
+// none at the feet. [-]
+double slope_at_feet(TimeScheme scheme, double theta) {
+  return scheme == TimeScheme::bdf2 ? 0.0 : 0.75 - 0.5 * theta;
 }
 
 using Vector = Eigen::VectorXd;
@@ -201,12 +203,10 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
   });
   weight = {};
   slope = {};
-  {
-    SparseMatrix M1(N1, N1);  // P1 mass [m^2]
-    M1.setFromTriplets(m1.begin(), m1.end());
-    m1 = {};
-    plan_schur_matrix(M1);
-  }
+  M1_.resize(N1, N1);
+  M1_.setFromTriplets(m1.begin(), m1.end());
+  m1 = {};
+  plan_schur_matrix(M1_);
   // K_nu's pattern, its unknowns renumbered by locality (reverse Cuthill-McKee) for the
   // predictor's sweeps and its incomplete factor.
   const SparseMatrix pattern =
@@ -278,12 +278,9 @@ void SegregatedStep::plan_schur_matrix(const SparseMatrix& M1) {
     }
   }
   m1_position_.clear();
-  m1_value_.clear();
   for (int k = 0; k < M1.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator entry(M1, k); entry; ++entry) {
+    for (SparseMatrix::InnerIterator entry(M1, k); entry; ++entry)
       m1_position_.push_back(position(static_cast<int>(entry.row()), k));
-      m1_value_.push_back(entry.value());
-    }
 }
 
 SegregatedStep::~SegregatedStep() = default;
@@ -431,7 +428,7 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
     w.x[2 * k + 1] = n.v[a];
   }
   pair_product(K_, 1.0, nullptr, nullptr, w.x, w.b);  // K_nu u^n
-  const double s_node = (1.0 - slope_at_feet(in.theta)) * in.g;
+  const double s_node = (1.0 - in.slope_at_feet) * in.g;
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     const Vec2& force = in.loads->force[a];
@@ -509,9 +506,15 @@ Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vec
 }
 
 StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
+  if (s.history_) std::swap(s.before_, s.previous_);  // t^{n-1}
   s.previous_ = s.state_;
+  // The time term (u - u_d) inv_dt (ShallowWaterSolver::time_step): the theta-scheme's inv_dt =
+  // 1/dt, u_d from u^n; BDF2's theta = 1, u_d = now u^n + before u^{n-1} at their feet, and
+  // eta^n's part in the continuity equation likewise.
   const ShallowWaterSolver::Iteration it = s.time_step(dt);
+  const bool bdf2 = s.case_.time.scheme == TimeScheme::bdf2;
   const double th = it.theta, g = s.case_.flow.gravity;
+  const double feet = slope_at_feet(s.case_.time.scheme, th);
   const FlowState& n = s.previous_;
   FlowState& next = s.state_;
   const int N2 = mesh_.node_count(), N1 = mesh_.vertex_count;
@@ -531,23 +534,35 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     const double f = flow.coriolis
                          ? 2.0 * earth_rotation_rate * std::sin(flow.latitude_deg * pi / 180.0)
                          : 0.0;  // [1/s]
-    w.q_x.resize(N2);
-    w.q_y.resize(N2);
-    for (int a = 0; a < N2; ++a) {
-      const Vec2 u_a(n.u[a], n.v[a]);
-      const Vec2 acceleration =
-          -slope_at_feet(th) * g * Vec2(G_eta[2 * a], G_eta[2 * a + 1]) / m_[a] -
-          f * Vec2(-u_a.y(), u_a.x());  // (3) (6), the parts at the feet
-      w.q_x[a] = u_a.x() + dt * acceleration.x();
-      w.q_y[a] = u_a.y() + dt * acceleration.y();
+    if (bdf2) {
+      // u^n and u^{n-1} at their feet; Coriolis (6) at the node, on u extrapolated to t^{n+1}
+      // (second order, and explicit: implicit it would make (M-22) unsymmetric).
+      s.departure_values(it, dt);
+      const double w_n = it.before == 0.0 ? 0.0 : dt / it.dt_before;  // [-]
+      for (int a = 0; a < N2 && f != 0.0; ++a) {
+        const double u_x = (1.0 + w_n) * n.u[a] - w_n * s.before_.u[a];
+        const double u_y = (1.0 + w_n) * n.v[a] - w_n * s.before_.v[a];
+        s.u_departure_[a] += f * u_y / it.inv_dt;
+        s.v_departure_[a] -= f * u_x / it.inv_dt;
+      }
+    } else {
+      w.q_x.resize(N2);
+      w.q_y.resize(N2);
+      for (int a = 0; a < N2; ++a) {
+        const Vec2 u_a(n.u[a], n.v[a]);
+        const Vec2 acceleration = -feet * g * Vec2(G_eta[2 * a], G_eta[2 * a + 1]) / m_[a] -
+                                  f * Vec2(-u_a.y(), u_a.x());  // (3) (6), the parts at the feet
+        w.q_x[a] = u_a.x() + dt * acceleration.x();
+        w.q_y[a] = u_a.y() + dt * acceleration.y();
+      }
+      s.characteristics_->advect(n.u, n.v, dt, w.q_x, w.q_y, s.u_departure_, s.v_departure_);
     }
-    s.characteristics_->advect(n.u, n.v, dt, w.q_x, w.q_y, s.u_departure_, s.v_departure_);
 
     // 2. Momentum predictor (M-21), viscosity and friction implicit.
     w.A.resize(N2);  // [m^2/s] m_a/dt + gamma_a m_a
-    for (int a = 0; a < N2; ++a) w.A[a] = m_[a] / dt + loads.gamma_m[a];
+    for (int a = 0; a < N2; ++a) w.A[a] = m_[a] * it.inv_dt + loads.gamma_m[a];
     const Vector& A = w.A;
-    predict_velocity(s, {th, g, 1.0 / dt, &G_eta, &A, &loads}, next.u, next.v);
+    predict_velocity(s, {th, feet, g, it.inv_dt, &G_eta, &A, &loads}, next.u, next.v);
 
     // The constraint P_a of each node: free (the identity, the nodes not listed), fixed
     // (velocity nodes: zero), or u . normal = 0 (walls, and the tangent of elevation boundaries
@@ -583,7 +598,7 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     double* S_values = S_.valuePtr();
     std::fill(S_values, S_values + S_.nonZeros(), 0.0);
     for (size_t k = 0; k < m1_position_.size(); ++k)
-      S_values[m1_position_[k]] = m1_value_[k] / dt;  // (8)
+      S_values[m1_position_[k]] = M1_.valuePtr()[k] * it.inv_dt;  // (8)
     // The depth's change carried by u^n, theta (d_eta u^n) in (9) as in the coupled step (with
     // it explicit the step is unstable at a Froude number of 0.5 and Courant 4.4: the bump):
     // C x = G^T (theta u^n_a x_a), x_a at P2 node a interpolated from the vertices, assembled
@@ -611,6 +626,10 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     }
     w.b.noalias() = G_.transpose() * w.flux;  // (9)
     w.b += loads.source;                      // (11)
+    if (it.before != 0.0) {  // (8) BDF2: eta_d - eta^n = before (eta^{n-1} - eta^n)
+      const Eigen::Map<const Vector> eta_before(s.before_.eta.data(), N1);
+      w.b.noalias() += (it.before * it.inv_dt) * (M1_ * (eta_before - eta_n));
+    }
     Vector& b = w.b;
     std::vector<double> open_flux(mesh_.group_names.size(), 0.0);
     EdgeValues ev;
@@ -674,6 +693,7 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     }
   } catch (const RunError&) {
     s.state_ = s.previous_;
+    if (s.history_) s.previous_ = s.before_;
     throw;
   }
   s.accumulate_balance(it, dt);

@@ -1,8 +1,8 @@
 #pragma once
 // The segregated (projection) time step of the FEM engine, `flow.scheme: segregated`
-// (docs/model.md "The segregated step", (M-20)-(M-23)). Same unknowns and weak form as the coupled
-// step (element_assembly.hpp), theta-scheme, advection by characteristics; the coupled (u, eta)
-// system is replaced by a sequence of small ones:
+// (docs/model.md "The segregated step", (M-20)-(M-23)). Same unknowns and weak form as the
+// coupled step (element_assembly.hpp), theta-scheme or BDF2, advection by characteristics; the
+// coupled (u, eta) system is replaced by a sequence of small ones:
 //
 //   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-s g G eta^n) - f k x u^n       (M-20)
 //   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - (1-s) g G eta^n
@@ -12,6 +12,10 @@
 //                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a),  C x = G^T (theta u^n_a x_a)
 //                    (M-22): SPD but for C, the depth's change carried by the current
 //   4. correction  u^{n+1}_a = P_a (u~_a - theta g (G d_eta)_a / A_a)         (M-23)
+//
+// With BDF2 (time.scheme: bdf2) the stages are the same with theta = 1, s = 0, 1/dt replaced by
+// BDF2's inv_dt, u_d by BDF2's u^n and u^{n-1} at their feet, eta^{n-1}'s part of the time term on
+// the right of (M-22), and Coriolis at the node on u extrapolated to t^{n+1}.
 //
 // The slope at t^n is taken in part s = 3/4 - theta/2 at the feet, 1 - s at the node (s = 1/2
 // would centre it along the path; s = 1 - theta, the coupled step's split, leaves a steady error
@@ -102,10 +106,10 @@ class SegregatedStep {
     std::vector<double> row_value;
     Eigen::MatrixXd V, Z;  // GMRES's Krylov basis and its preconditioned vectors
   };
-  struct Prediction {              // what the momentum predictor (M-21) takes
-    double theta, g, inv_dt;       // [-], [m s^-2], [1/s]
-    const Eigen::VectorXd* G_eta;  // G eta^n [m^2], rows 2a + c
-    const Eigen::VectorXd* A;      // m_a/dt + gamma_a m_a [m^2/s]
+  struct Prediction {                        // what the momentum predictor (M-21) takes
+    double theta, slope_at_feet, g, inv_dt;  // [-], [-], [m s^-2], [1/s]
+    const Eigen::VectorXd* G_eta;            // G eta^n [m^2], rows 2a + c
+    const Eigen::VectorXd* A;                // m_a/dt + gamma_a m_a [m^2/s]
     const Loads* loads;
   };
   void assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads);
@@ -123,13 +127,13 @@ class SegregatedStep {
   using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
   RowMatrix G_;  // (2 N2) x N1, rows 2a + c: sum_e m_a^e (d M_i / d x_c)_e [m]
   std::vector<std::array<int, 2>> mid_ends_;  // the two vertices of each mid node (index - N1)
+  SparseMatrix M1_;                           // P1 mass (8) [m^2]
   SparseMatrix S_;  // (M-22)'s SPD part, M_1/dt + theta^2 g G^T D G [m^2/s], fixed pattern
   std::vector<int> schur_position_;  // per node, per pair (i, j) of its vertices: S_'s value
-  std::vector<int> m1_position_;     // M_1's entries in S_'s values
+  std::vector<int> m1_position_;     // M1_'s values' places in S_'s values
   // Per node a: where the vertices that a P1 field at a interpolates from (a itself, or a mid
   // node's two ends; -1: none) are among its row's of G (C's columns).
   std::vector<std::array<int, 2>> carried_local_;
-  std::vector<double> m1_value_;  // [m^2]
   // The momentum predictor (M-21) works on the P2 nodes renumbered by locality: node a is
   // unknown node_order_[a] of K_, of the factor and of the predictor's vectors.
   std::vector<int> node_order_;

@@ -30,12 +30,9 @@ ShallowWaterSolver::ShallowWaterSolver(const Mesh& mesh, const Case& flow_case,
         at);
   }
   if (flow_case.flow.scheme == FlowScheme::segregated &&
-      (flow_case.time.scheme != TimeScheme::theta ||
-       options_.advection != Advection::characteristics))
-    throw_input_error(
-        "{}: flow.scheme: segregated takes the theta-scheme (time.scheme: theta) and advection "
-        "by characteristics",
-        flow_case.file.empty() ? "case" : flow_case.file);
+      options_.advection != Advection::characteristics)
+    throw_input_error("{}: flow.scheme: segregated takes advection by characteristics",
+                      flow_case.file.empty() ? "case" : flow_case.file);
   if (flow_case.flow.friction != FrictionLaw::none) {  // (M-19) at each element's centroid
     std::vector<Vec2> centroids(mesh.element_count());
     for (int e = 0; e < mesh.element_count(); ++e) {
