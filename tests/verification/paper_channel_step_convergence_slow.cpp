@@ -9,7 +9,8 @@
 //   - the mean surface at four gauges one pier diameter upstream of the bridge (x = 250 m; y =
 //     10, 42.5, 85, 127.5 m: bank gap, pier axis, middle gap, pier axis) within 2 % of the 0.1 m
 //     fall over the reach (2 mm; 2 % of the depth, 20 cm, would be the whole fall).
-// Both steps (flow.scheme), each against its own dt = 0.1 s run.
+// Both steps (flow.scheme) with the theta-scheme, and the segregated step with BDF2, each against
+// its own dt = 0.1 s run.
 // docs/validation.md "Step convergence on the paper's channel" has the figures.
 #include <gtest/gtest.h>
 
@@ -18,7 +19,7 @@
 #include <cstdio>
 #include <string>
 
-#include "../support/flow_schemes.hpp"
+#include "../support/time_schemes.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "io/case_file.hpp"
 #include "mesh/interpolation.hpp"
@@ -73,18 +74,20 @@ Means run(const Case& c, const Mesh& mesh, double dt) {
   return m;
 }
 
-class PaperChannelStep : public testing::TestWithParam<FlowScheme> {};
+class PaperChannelStep : public testing::TestWithParam<test::StepAndTime> {};
 
 TEST_P(PaperChannelStep, ExamplesStepWithinTwoPercentOfTheReference) {
   Case c = shortened_channel();
-  c.flow.scheme = GetParam();
+  c.flow.scheme = GetParam().flow;
+  c.time.scheme = GetParam().time;
   const Mesh mesh = generate_mesh(c.mesh);
   const double step = c.time.step;  // [s] the examples' step
   const Means coarse = run(c, mesh, step), fine = run(c, mesh, reference_step);
   const double dQ = coarse.discharge / fine.discharge - 1.0;
-  std::printf("%s, %d elements: Q(dt = %g s) = %.1f, Q(dt = 0.1 s) = %.1f m^3/s: %+.2f %%\n",
-              test::scheme_name(GetParam()).c_str(), mesh.element_count(), step, coarse.discharge,
-              fine.discharge, 100 * dQ);
+  std::printf("%s, %s, %d elements: Q(dt = %g s) = %.1f, Q(dt = 0.1 s) = %.1f m^3/s: %+.2f %%\n",
+              test::scheme_name(GetParam().flow).c_str(),
+              test::scheme_name(GetParam().time).c_str(), mesh.element_count(), step,
+              coarse.discharge, fine.discharge, 100 * dQ);
   EXPECT_LE(std::abs(dQ), 0.02);
   for (size_t k = 0; k < gauge_y.size(); ++k) {
     const double d_eta = coarse.surface[k] - fine.surface[k];
@@ -94,8 +97,12 @@ TEST_P(PaperChannelStep, ExamplesStepWithinTwoPercentOfTheReference) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(FlowSchemes, PaperChannelStep, test::both_flow_schemes,
-                         test::flow_scheme_name);
+INSTANTIATE_TEST_SUITE_P(
+    Schemes, PaperChannelStep,
+    testing::Values(test::StepAndTime{FlowScheme::coupled, TimeScheme::theta},
+                    test::StepAndTime{FlowScheme::segregated, TimeScheme::theta},
+                    test::StepAndTime{FlowScheme::segregated, TimeScheme::bdf2}),
+    test::step_and_time_name);
 
 }  // namespace
 }  // namespace flotsam
