@@ -536,14 +536,18 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
                          : 0.0;  // [1/s]
     if (bdf2) {
       // u^n and u^{n-1} at their feet; Coriolis (6) at the node, on u extrapolated to t^{n+1}
-      // (second order, and explicit: implicit it would make (M-22) unsymmetric).
+      // (second order, and explicit: implicit it would make (M-22) unsymmetric). Without a
+      // history (the first step) there is no u^{n-1}: u^n itself.
       s.departure_values(it, dt);
-      const double w_n = it.before == 0.0 ? 0.0 : dt / it.dt_before;  // [-]
+      const bool history = it.before != 0.0;
+      const double w_n = history ? dt / it.dt_before : 0.0;  // [-]
       for (int a = 0; a < N2 && f != 0.0; ++a) {
-        const double u_x = (1.0 + w_n) * n.u[a] - w_n * s.before_.u[a];
-        const double u_y = (1.0 + w_n) * n.v[a] - w_n * s.before_.v[a];
-        s.u_departure_[a] += f * u_y / it.inv_dt;
-        s.v_departure_[a] -= f * u_x / it.inv_dt;
+        const Vec2 u_a(n.u[a], n.v[a]);
+        const Vec2 u_new =
+            history ? Vec2(u_a + w_n * (u_a - Vec2(s.before_.u[a], s.before_.v[a]))) : u_a;
+        const Vec2 coriolis = -f * Vec2(-u_new.y(), u_new.x()) / it.inv_dt;  // (6) [m/s]
+        s.u_departure_[a] += coriolis.x();
+        s.v_departure_[a] += coriolis.y();
       }
     } else {
       w.q_x.resize(N2);
