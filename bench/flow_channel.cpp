@@ -28,9 +28,10 @@
 // across solves as the approximate inverse of an iterative refinement, or not (all modes; unset:
 // FlowSolverOptions' default), FLOTSAM_FLOW_SCHEME=coupled|segregated the step (flow.scheme; all
 // modes but steady), FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta the time scheme and
-// FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (steady, unsteady;
-// unset: the case's), FLOTSAM_FLOW_TRACE=S a line every S seconds of simulated time with the
-// discharges and the fastest node (unsteady); every mode prints the linear solver's counts.
+// FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length the eddy viscosity (all modes; unset:
+// the case's: the segregated step with the mixing length), FLOTSAM_FLOW_TRACE=S a line every S
+// seconds of simulated time with the discharges and the fastest node (unsteady); every mode prints
+// the linear solver's counts.
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -111,8 +112,8 @@ void set_reuse_from_environment(FlowSolverOptions& options) {
     options.reuse_factorisation = std::string(e) == "1";
 }
 
-// FLOTSAM_FLOW_TIME_SCHEME=bdf2|theta and FLOTSAM_FLOW_TURBULENCE=none|smagorinsky|mixing-length
-// replace the case's; false, with a message, for any other value.
+// FLOTSAM_FLOW_SCHEME, FLOTSAM_FLOW_TIME_SCHEME and FLOTSAM_FLOW_TURBULENCE replace the case's;
+// false, with a message, for any other value.
 bool set_case_from_environment(Case& c) {
   if (const char* e = std::getenv("FLOTSAM_FLOW_SCHEME")) {
     const std::string scheme = e;
@@ -157,9 +158,9 @@ void print_linear_solver_counts(const ShallowWaterSolver& solver) {
   if (const SegregatedStep* segregated = solver.segregated_step())
     std::printf(
         "segregated: %ld GMRES iterations of the elevation system, %ld Cholesky factorisations, "
-        "%ld CG iterations of the momentum predictor (u and v)\n",
+        "%ld CG iterations of the momentum predictor (u and v), %ld incomplete factorisations\n",
         segregated->elevation_iterations(), segregated->factorisations(),
-        segregated->momentum_iterations());
+        segregated->momentum_iterations(), segregated->predictor_factorisations());
 }
 
 int run_steady(double mesh_size, double viscosity) {

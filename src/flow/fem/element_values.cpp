@@ -20,34 +20,62 @@ std::array<Mat2, 6> reference_hessians() {
   return h;
 }
 
+// The basis and its reference gradients at the quadrature points, the same for every element.
+struct ReferenceValues {
+  std::array<P2Values, triangle_point_count> N2;
+  std::array<P2Gradients, triangle_point_count> dN2;
+  std::array<P1Values, triangle_point_count> N1;
+  P1Gradients dN1;
+};
+
+const ReferenceValues& reference_values() {
+  static const ReferenceValues values = [] {
+    ReferenceValues v;
+    const auto& rule = triangle_rule();
+    for (int q = 0; q < triangle_point_count; ++q) {
+      v.N2[q] = p2_values(rule[q].r, rule[q].s);
+      v.dN2[q] = p2_reference_gradients(rule[q].r, rule[q].s);
+      v.N1[q] = p1_values(rule[q].r, rule[q].s);
+    }
+    v.dN1 = p1_reference_gradients();
+    return v;
+  }();
+  return values;
+}
+
 }  // namespace
 
 void compute_element_values(const Mesh& mesh, int e, ElementValues& v, bool with_hessians) {
   const auto& el = mesh.elements[e];
   const auto& rule = triangle_rule();
-  const P1Gradients g1 = p1_reference_gradients();
+  const ReferenceValues& ref = reference_values();
+  const P1Gradients& g1 = ref.dN1;
+  // A straight element's map is affine: its Jacobian is the same at every point.
+  const bool curved = mesh.is_curved(e);
+  Mat2 J_inv_T;
+  double det_J = 0.0;  // [m^2]
   for (int q = 0; q < triangle_point_count; ++q) {
-    const double r = rule[q].r, s = rule[q].s;
-    const P2Gradients g2 = p2_reference_gradients(r, s);
-    v.N2[q] = p2_values(r, s);
-    v.N1[q] = p1_values(r, s);
+    const P2Gradients& g2 = ref.dN2[q];
+    v.N2[q] = ref.N2[q];
+    v.N1[q] = ref.N1[q];
     // Isoparametric map x(r, s) = sum_k X_k N_k(r, s): J = sum_k X_k (grad_(r,s) N_k)^T.
-    Mat2 J = Mat2::Zero();
     Vec2 x = Vec2::Zero();
-    for (int k = 0; k < 6; ++k) {
-      J += mesh.nodes[el[k]] * g2[k].transpose();
-      x += v.N2[q][k] * mesh.nodes[el[k]];
+    for (int k = 0; k < 6; ++k) x += v.N2[q][k] * mesh.nodes[el[k]];
+    if (q == 0 || curved) {
+      Mat2 J = Mat2::Zero();
+      for (int k = 0; k < 6; ++k) J += mesh.nodes[el[k]] * g2[k].transpose();
+      J_inv_T = J.inverse().transpose();
+      det_J = std::abs(J.determinant());
     }
-    const Mat2 J_inv_T = J.inverse().transpose();
     for (int k = 0; k < 6; ++k) v.dN2[q][k] = J_inv_T * g2[k];
     for (int k = 0; k < 3; ++k) v.dN1[q][k] = J_inv_T * g1[k];
-    v.JxW[q] = std::abs(J.determinant()) * rule[q].weight;
+    v.JxW[q] = det_J * rule[q].weight;
     v.x[q] = x;
   }
   v.area = mesh.area[e];
   v.size = std::sqrt(2.0 * v.area);
   static const std::array<Mat2, 6> h_ref = reference_hessians();
-  if (!with_hessians || mesh.is_curved(e)) {
+  if (!with_hessians || curved) {
     for (auto& h : v.hessian2) h.setZero();
   } else {
     const Mat2 J_inv = mesh.jacobian(e).inverse();

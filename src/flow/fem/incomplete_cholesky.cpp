@@ -20,7 +20,7 @@ void IncompleteCholesky::analyse(const SparseMatrix& K) {
       throw_run_error("incomplete Cholesky: row {} of the pattern has no diagonal entry", i);
     row_start_[i + 1] = row_start_[i] + (p - outer_[i]) + 1;
   }
-  value_.assign(static_cast<size_t>(row_start_[n]), 0.0);
+  value_.assign(static_cast<size_t>(row_start_[n]), 0.0f);
   marker_.assign(n, -1);
 }
 
@@ -44,30 +44,27 @@ bool IncompleteCholesky::try_factorise(const SparseMatrix& K, double s, const Ei
     const int begin = row_start_[i], diagonal = row_start_[i + 1] - 1;
     const double* k = K.valuePtr() + outer_[i] - begin;  // k[p]: K's value of L's entry p
     if (fixed[i]) {
-      for (int p = begin; p < diagonal; ++p) value_[p] = 0.0;
-      value_[diagonal] = 1.0;
+      for (int p = begin; p < diagonal; ++p) value_[p] = 0.0f;
+      value_[diagonal] = 1.0f;
       continue;
     }
-    for (int p = begin; p < diagonal; ++p) {
-      value_[p] = fixed[column(i, p)] ? 0.0 : s * k[p];
-      marker_[column(i, p)] = p;
-    }
-    for (int p = begin; p < diagonal; ++p) {
-      const int j = column(i, p);
-      double sum = value_[p];
-      for (int q = row_start_[j]; q < row_start_[j + 1] - 1; ++q) {
-        const int m = marker_[column(j, q)];
-        if (m >= 0 && m < p) sum -= value_[m] * value_[q];
-      }
-      value_[p] = sum / value_[row_start_[j + 1] - 1];
-    }
+    for (int p = begin; p < diagonal; ++p) marker_[column(i, p)] = p;
     double pivot = (d[i] + s * k[diagonal]) * (1.0 + shift);
     for (int p = begin; p < diagonal; ++p) {
-      pivot -= value_[p] * value_[p];
-      marker_[column(i, p)] = -1;
+      const int j = column(i, p);
+      double sum = fixed[j] ? 0.0 : s * k[p];
+      for (int q = row_start_[j]; q < row_start_[j + 1] - 1; ++q) {
+        const int m = marker_[column(j, q)];
+        if (m >= 0 && m < p) sum -= l(m) * l(q);
+      }
+      value_[p] = static_cast<float>(sum / l(row_start_[j + 1] - 1));
+      pivot -= l(p) * l(p);
     }
+    for (int p = begin; p < diagonal; ++p) marker_[column(i, p)] = -1;
     if (!(pivot > 0.0)) return false;
-    value_[diagonal] = std::sqrt(pivot);
+    value_[diagonal] = static_cast<float>(std::sqrt(pivot));
+    if (!(value_[diagonal] > 0.0f) || !std::isfinite(value_[diagonal]))
+      return false;  // float range
   }
   return true;
 }
@@ -78,14 +75,14 @@ void IncompleteCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) con
   for (int i = 0; i < n; ++i) {  // L y = r
     double sum = z[i];
     const int diagonal = row_start_[i + 1] - 1;
-    for (int p = row_start_[i]; p < diagonal; ++p) sum -= value_[p] * z[column(i, p)];
-    z[i] = sum / value_[diagonal];
+    for (int p = row_start_[i]; p < diagonal; ++p) sum -= l(p) * z[column(i, p)];
+    z[i] = sum / l(diagonal);
   }
   for (int i = n - 1; i >= 0; --i) {  // L^T z = y, by rows of L
     const int diagonal = row_start_[i + 1] - 1;
-    const double z_i = z[i] / value_[diagonal];
+    const double z_i = z[i] / l(diagonal);
     z[i] = z_i;
-    for (int p = row_start_[i]; p < diagonal; ++p) z[column(i, p)] -= value_[p] * z_i;
+    for (int p = row_start_[i]; p < diagonal; ++p) z[column(i, p)] -= l(p) * z_i;
   }
 }
 
@@ -99,25 +96,25 @@ std::array<double, 2> IncompleteCholesky::solve_pair(const std::vector<double>& 
     const int* index = index_ + outer_[i] - row_start_[i];  // index[p]: column of entry p
     for (int p = row_start_[i]; p < diagonal; ++p) {
       const int j = index[p];
-      sum_0 -= value_[p] * z[2 * j];
-      sum_1 -= value_[p] * z[2 * j + 1];
+      sum_0 -= l(p) * z[2 * j];
+      sum_1 -= l(p) * z[2 * j + 1];
     }
-    z[2 * i] = sum_0 / value_[diagonal];
-    z[2 * i + 1] = sum_1 / value_[diagonal];
+    z[2 * i] = sum_0 / l(diagonal);
+    z[2 * i + 1] = sum_1 / l(diagonal);
   }
   std::array<double, 2> rz{0.0, 0.0};
   for (int i = n - 1; i >= 0; --i) {  // L^T z = y, by rows of L; z_i is final once divided
     const int diagonal = row_start_[i + 1] - 1;
     const int* index = index_ + outer_[i] - row_start_[i];
-    const double z_0 = z[2 * i] / value_[diagonal], z_1 = z[2 * i + 1] / value_[diagonal];
+    const double z_0 = z[2 * i] / l(diagonal), z_1 = z[2 * i + 1] / l(diagonal);
     z[2 * i] = z_0;
     z[2 * i + 1] = z_1;
     rz[0] += r[2 * i] * z_0;
     rz[1] += r[2 * i + 1] * z_1;
     for (int p = row_start_[i]; p < diagonal; ++p) {
       const int j = index[p];
-      z[2 * j] -= value_[p] * z_0;
-      z[2 * j + 1] -= value_[p] * z_1;
+      z[2 * j] -= l(p) * z_0;
+      z[2 * j + 1] -= l(p) * z_1;
     }
   }
   return rz;

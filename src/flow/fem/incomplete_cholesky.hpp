@@ -37,11 +37,14 @@ class IncompleteCholesky {
   // Row i of L is the head of K's column i (rows j <= i, the diagonal last): its column indices
   // are K's, and row_start_ places its values in value_.
   int column(int i, int p) const { return index_[outer_[i] + p - row_start_[i]]; }
-  const int* outer_ = nullptr;  // K's column starts
-  const int* index_ = nullptr;  // K's row indices
+  double l(int p) const { return static_cast<double>(value_[p]); }  // L's entry p
+  const int* outer_ = nullptr;                                      // K's column starts
+  const int* index_ = nullptr;                                      // K's row indices
   std::vector<int> row_start_;  // per row of L: its first entry in value_
-  std::vector<double> value_;   // L's values
-  std::vector<int> marker_;     // per column: position of the entry in the current row, or -1
+  // L's values, in single precision: the solves' sweeps are bound by reading L, and a
+  // preconditioner needs no more digits (each entry is computed in double, then rounded).
+  std::vector<float> value_;
+  std::vector<int> marker_;  // per column: position of the entry in the current row, or -1
   double shift_ = 0.0;
 };
 

@@ -350,12 +350,12 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
         diagonal[b] += ev.N2[q][b] * ev.N2[q][b] * ev.JxW[q];
     }
     for (int j = 0; j < 3; ++j) eta_e[j] = n.eta[el[j]];
-    const ElementFlowAverage avg = element_flow_average(ev, u_e, v_e, z_e, eta_e);
-    const double A = avg.area;
+    double A = 0.0;  // [m^2]
+    for (int q = 0; q < triangle_point_count; ++q) A += ev.JxW[q];
     const double nu_t =
-        flow.turbulence == TurbulenceModel::none
-            ? 0.0
-            : eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction, avg);  // (M-3)
+        constant_k ? 0.0
+                   : eddy_viscosity(flow.turbulence, flow.smagorinsky_constant, friction,
+                                    element_flow_average(ev, u_e, v_e, z_e, eta_e));  // (M-3)
     const double nu_e = flow.viscosity + nu_t;  // (M-3) [m^2/s]
     double diagonal_sum = 0.0;
     for (double d : diagonal) diagonal_sum += d;
@@ -405,45 +405,43 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   k_viscosity_ = constant_k ? flow.viscosity : std::numeric_limits<double>::quiet_NaN();
 }
 
-// (M-21) for u and v: (diag(A) + theta K_nu) u~ = m u_d/dt - theta g G eta^n + F -
-// (1-theta) K_nu u^n, A_a = m_a/dt + gamma_a m_a, velocity nodes fixed at their boundary values
-// (set in u, v on entry), by conjugate gradients preconditioned with the matrix's zero fill-in
-// incomplete Cholesky factor (made each step: friction and the eddy viscosity change the
-// matrix), on the nodes in K_'s order (node_order_), both components in one sweep.
+// (M-21) for u and v: (diag(A) + K_nu) u~ = m u_d/dt - (1 - s) g G eta^n + F, A_a = m_a/dt +
+// gamma_a m_a, velocity nodes fixed at their boundary values (set in u, v on entry), by
+// conjugate gradients from u_d, preconditioned with the zero fill-in incomplete Cholesky factor
+// of the matrix of an earlier step (friction and the eddy viscosity change it little from step
+// to step; made again once it ages: predictor_factor_), on the nodes in K_'s order
+// (node_order_), both components in one sweep.
 void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Prediction& in,
                                       std::vector<double>& u, std::vector<double>& v) {
   const int N2 = mesh_.node_count();
-  const FlowState& n = s.previous_;
   Predictor& w = predictor_;
   w.fixed.assign(N2, 0);
   for (const auto& node : s.bc_.velocity_nodes) w.fixed[node_order_[node.node]] = 1;
   w.A.resize(N2);  // [m^2/s] in K_'s order
   for (int a = 0; a < N2; ++a) w.A[node_order_[a]] = (*in.A)[a];
-  predictor_factor_.factorise(K_, in.theta, w.A, w.fixed);
-  w.x.resize(2 * static_cast<size_t>(N2));  // u^n, then u~, interleaved (entry 2 k + c)
-  w.b.resize(2 * static_cast<size_t>(N2));
-  for (int a = 0; a < N2; ++a) {
-    const int k = node_order_[a];
-    w.x[2 * k] = n.u[a];
-    w.x[2 * k + 1] = n.v[a];
+  const bool fresh = predictor_age_ < 0 || w.fixed != factor_fixed_;
+  if (fresh) {
+    predictor_factor_.factorise(K_, 1.0, w.A, w.fixed);
+    factor_fixed_ = w.fixed;
+    ++predictor_factorisations_;
   }
-  pair_product(K_, 1.0, nullptr, nullptr, w.x, w.b);  // K_nu u^n
+  w.x.resize(2 * static_cast<size_t>(N2));  // u~, interleaved (entry 2 k + c)
+  w.b.resize(2 * static_cast<size_t>(N2));
   const double s_node = (1.0 - in.slope_at_feet) * in.g;
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     const Vec2& force = in.loads->force[a];
     for (int c = 0; c < 2; ++c)
       w.b[2 * k + c] = m_[a] * (c == 0 ? s.u_departure_ : s.v_departure_)[a] * in.inv_dt  // (1)
-                       - s_node * (*in.G_eta)[2 * a + c]     // (3) node, t^n
-                       + force[c]                            // (4) (7)
-                       - (1.0 - in.theta) * w.b[2 * k + c];  // (4)
-    if (w.fixed[k]) {
-      w.x[2 * k] = u[a];
-      w.x[2 * k + 1] = v[a];
-    }
+                       - s_node * (*in.G_eta)[2 * a + c]  // (3) node, t^n
+                       + force[c];                        // (4) T_nu, (7)
+    // The first iterate: the boundary values at fixed nodes, elsewhere u_d, the flow arriving
+    // along the paths (closer to u~ than u^n where the flow is carried).
+    w.x[2 * k] = w.fixed[k] ? u[a] : s.u_departure_[a];
+    w.x[2 * k + 1] = w.fixed[k] ? v[a] : s.v_departure_[a];
   }
   const auto apply = [&](const std::vector<double>& p, std::vector<double>& y) {
-    return pair_product(K_, in.theta, w.A.data(), &w.fixed, p, y);  // (4) (1) (5)
+    return pair_product(K_, 1.0, w.A.data(), &w.fixed, p, y);  // (4) (1) (5)
   };
   const auto precondition = [&](const std::vector<double>& r, std::vector<double>& z) {
     return predictor_factor_.solve_pair(r, z);
@@ -456,6 +454,12 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
                       max_cg_iterations);
     momentum_iterations_ += iterations[c];
   }
+  const int most = std::max(iterations[0], iterations[1]);
+  if (fresh) predictor_fresh_iterations_ = most;
+  // Aged too far: the next step makes a fresh factor.
+  predictor_age_ = fresh                                                       ? 0
+                   : most > predictor_fresh_iterations_ + max_extra_iterations ? -1
+                                                                               : predictor_age_ + 1;
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     u[a] = w.x[2 * k];
@@ -464,7 +468,7 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
 }
 
 Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vector& b,
-                                                const Operator& apply) {
+                                                const Operator& apply, const Vector& guess) {
   const auto factorise = [&] {
     if (!factor_) factor_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
     if (analysed_nonzeros_ != S.nonZeros()) {
@@ -484,12 +488,12 @@ Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vec
   // Refactorised when the aged factor needs more iterations than a fresh one did, plus a margin
   // (the part C that the factor leaves out sets how many a fresh one needs).
   const int allowed = fresh ? max_fresh_iterations : fresh_iterations_ + max_extra_iterations;
-  Vector x = Vector::Zero(b.size());
+  Vector x = guess;
   int iterations = gmres(apply, precondition, b, x, gmres_tolerance, allowed, work_.V, work_.Z);
   if (iterations > allowed && !fresh) {  // the factor aged too far: a fresh one
     elevation_iterations_ += allowed;
     factorise();
-    x.setZero();
+    x = guess;
     iterations =
         gmres(apply, precondition, b, x, gmres_tolerance, max_fresh_iterations, work_.V, work_.Z);
     fresh_iterations_ = iterations;
@@ -566,7 +570,7 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     w.A.resize(N2);  // [m^2/s] m_a/dt + gamma_a m_a
     for (int a = 0; a < N2; ++a) w.A[a] = m_[a] * it.inv_dt + loads.gamma_m[a];
     const Vector& A = w.A;
-    predict_velocity(s, {th, feet, g, it.inv_dt, &G_eta, &A, &loads}, next.u, next.v);
+    predict_velocity(s, {feet, g, it.inv_dt, &G_eta, &A, &loads}, next.u, next.v);
 
     // The constraint P_a of each node: free (the identity, the nodes not listed), fixed
     // (velocity nodes: zero), or u . normal = 0 (walls, and the tangent of elevation boundaries
@@ -666,8 +670,13 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     eliminate_elevation_boundaries(w);
     const Eigen::Map<const SparseMatrix> system(N1, N1, S_.nonZeros(), S_.outerIndexPtr(),
                                                 S_.innerIndexPtr(), w.system_values.data());
-    d_eta = solve_elevation(S_, w.b_free,
-                            [&](const Vector& x, Vector& y) { y.noalias() = system * x; });
+    // The first iterate: the surface's last rate of change times dt (it changes smoothly from
+    // step to step; zero at the first step and after refactorise(), so that a restart continues
+    // bit for bit), with the elevation boundaries' known values.
+    w.guess = eta_rate_.size() == N1 ? Vector(eta_rate_ * dt) : Vector::Zero(N1);
+    for (const auto& node : s.bc_.elevation_nodes) w.guess[node.vertex] = d_eta[node.vertex];
+    d_eta = solve_elevation(
+        S_, w.b_free, [&](const Vector& x, Vector& y) { y.noalias() = system * x; }, w.guess);
 
     // 4. Correction (M-23).
     w.G_d_eta.noalias() = G_ * d_eta;
@@ -681,6 +690,7 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
       next.v[a] = P_after ? (*P_after * u_new).y() : u_new.y();
     }
     for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
+    eta_rate_ = d_eta / dt;
     next.time = it.t_new;
     s.check_state(next, it.t_new);
 

@@ -5,8 +5,8 @@
 // coupled (u, eta) system is replaced by a sequence of small ones:
 //
 //   1. advection   u_d = (u^n + dt a^n)(X), a^n = M_L^-1 (-s g G eta^n) - f k x u^n       (M-20)
-//   2. momentum    (M_L (1/dt + gamma^n) + theta K_nu) u~ = M_L u_d/dt - (1-s) g G eta^n
-//                    - (1-theta) K_nu u^n - T_nu(u^n) + F                     (M-21) per component
+//   2. momentum    (M_L (1/dt + gamma^n) + K_nu) u~ = M_L u_d/dt - (1-s) g G eta^n
+//                    - T_nu(u^n) + F                                          (M-21) per component
 //   3. elevation   (M_1/dt + theta^2 g G^T D G - C) d_eta
 //                    = S - B + G^T H (theta u~ + (1-theta) u^n)
 //                    D_a = H_a P_a / A_a,  A_a = m_a (1/dt + gamma_a),  C x = G^T (theta u^n_a x_a)
@@ -26,14 +26,16 @@
 // (9), both integrated with M_L's own nodal quadrature: G_ai = sum over the elements e at node a of
 // m_a^e / |e| integral_e grad M_i, so that M_L^-1 G eta is at every node the mean of its elements'
 // slopes (the exact (N_a, grad M_i) is zero at P2 vertices: their shape functions integrate to
-// zero), K_nu the scalar viscous stiffness (nu_e grad u, grad w) of (4) (its transposed-gradient
-// half explicit, T_nu), P_a the velocity constraint at node a (identity; the tangent projector at
-// slip nodes; zero at velocity nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing
-// (7) is integrated in M_L's quadrature too. The momentum predictor is solved by conjugate
-// gradients preconditioned with its matrix's zero fill-in incomplete Cholesky factor, on the P2
-// nodes renumbered by locality (reverse Cuthill-McKee), u and v in one sweep
-// (pair_conjugate_gradients.hpp). C is assembled with S on S's pattern. The elevation system is
-// solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part,
+// zero), K_nu the scalar viscous stiffness (nu_e grad u, grad w) of (4), wholly at t^{n+1}
+// whatever theta (its transposed-gradient half T_nu explicit: bounded by K_nu, so that the pair
+// is stable at any step, which theta K_nu implicit is not once nu_e dt / h^2 grows), P_a the
+// velocity constraint at node a (identity; the tangent projector at slip nodes; zero at velocity
+// nodes), M_1 the P1 mass, x_a a P1 field at P2 node a. The forcing (7) is integrated in M_L's
+// quadrature too. The momentum predictor is solved by conjugate gradients preconditioned with the
+// zero fill-in incomplete Cholesky factor of its matrix at an earlier step (made again when the
+// iterations grow), on the P2 nodes renumbered by locality (reverse Cuthill-McKee), u and v in one
+// sweep (pair_conjugate_gradients.hpp). C is assembled with S on S's pattern. The elevation system
+// is solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part,
 // refactorised when GMRES needs more than max_extra_iterations beyond what it needed after the
 // last factorisation.
 #include <Eigen/CholmodSupport>
@@ -63,14 +65,19 @@ class SegregatedStep {
   /// Advances `solver` by dt [s] (its state, previous state, water balance). Throws RunError
   /// (state left at the start of the step) as ShallowWaterSolver::step does.
   StepReport step(ShallowWaterSolver& solver, double dt);
-  /// The next elevation solve factorises afresh (a restart must continue bit for bit).
-  void refactorise() { factor_age_ = -1; }
+  /// The next step factorises afresh (a restart must continue bit for bit).
+  void refactorise() {
+    factor_age_ = predictor_age_ = -1;
+    eta_rate_.resize(0);
+  }
 
   /// Conjugate-gradient iterations of the elevation solves so far, and factorisations.
   long elevation_iterations() const { return elevation_iterations_; }
   long factorisations() const { return factorisations_; }
   /// Conjugate-gradient iterations of the momentum predictor (M-21) so far, both components.
   long momentum_iterations() const { return momentum_iterations_; }
+  /// Incomplete Cholesky factorisations of the momentum predictor's matrix so far.
+  long predictor_factorisations() const { return predictor_factorisations_; }
 
  private:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
@@ -95,7 +102,7 @@ class SegregatedStep {
   };
   // The step's vectors, kept from one step to the next (no allocation per step).
   struct Work {
-    Vector G_eta, A, flux, b, b_free, d_eta, G_d_eta;
+    Vector G_eta, A, flux, b, b_free, d_eta, G_d_eta, guess;
     std::vector<double> carried_values;  // C in S_'s pattern [m^2/s]
     std::vector<double> system_values;   // S - C in S_'s pattern, eliminated [m^2/s]
     std::vector<double> q_x, q_y;
@@ -106,10 +113,10 @@ class SegregatedStep {
     std::vector<double> row_value;
     Eigen::MatrixXd V, Z;  // GMRES's Krylov basis and its preconditioned vectors
   };
-  struct Prediction {                        // what the momentum predictor (M-21) takes
-    double theta, slope_at_feet, g, inv_dt;  // [-], [-], [m s^-2], [1/s]
-    const Eigen::VectorXd* G_eta;            // G eta^n [m^2], rows 2a + c
-    const Eigen::VectorXd* A;                // m_a/dt + gamma_a m_a [m^2/s]
+  struct Prediction {                 // what the momentum predictor (M-21) takes
+    double slope_at_feet, g, inv_dt;  // [-], [m s^-2], [1/s]
+    const Eigen::VectorXd* G_eta;     // G eta^n [m^2], rows 2a + c
+    const Eigen::VectorXd* A;         // m_a/dt + gamma_a m_a [m^2/s]
     const Loads* loads;
   };
   void assemble_momentum(ShallowWaterSolver& s, double t_source, Loads& loads);
@@ -119,7 +126,7 @@ class SegregatedStep {
   /// (M-22): x with apply(x) = b, preconditioned by the Cholesky factor of the SPD part S.
   void plan_schur_matrix(const SparseMatrix& M1);
   Eigen::VectorXd solve_elevation(const SparseMatrix& S, const Eigen::VectorXd& b,
-                                  const Operator& apply);
+                                  const Operator& apply, const Eigen::VectorXd& guess);
   void eliminate_elevation_boundaries(Work& w);
 
   const Mesh& mesh_;
@@ -138,11 +145,17 @@ class SegregatedStep {
   // unknown node_order_[a] of K_, of the factor and of the predictor's vectors.
   std::vector<int> node_order_;
   SparseMatrix K_;  // scalar P2 viscous stiffness, nu_e (grad N_a, grad N_b) [m^2/s], reordered
-  IncompleteCholesky predictor_factor_;  // of (M-21)'s matrix, each step
-  struct Predictor {                     // (M-21)'s vectors, in K_'s order, kept across steps
-    std::vector<char> fixed;             // velocity nodes
-    Eigen::VectorXd A;                   // m_a/dt + gamma_a m_a [m^2/s]
-    std::vector<double> x, b;            // u (then u~) [m/s], right-hand side; entry 2 k + c
+  // Of (M-21)'s matrix at an earlier step (friction and the eddy viscosity change it little from
+  // one step to the next), made again when a solve needs more than max_extra_iterations
+  // beyond the solve that followed it, or when the fixed nodes change.
+  IncompleteCholesky predictor_factor_;
+  std::vector<char> factor_fixed_;  // the fixed nodes the factor was made with
+  int predictor_age_ = -1;          // steps since the factorisation; -1: none
+  int predictor_fresh_iterations_ = 0;
+  struct Predictor {           // (M-21)'s vectors, in K_'s order, kept across steps
+    std::vector<char> fixed;   // velocity nodes
+    Eigen::VectorXd A;         // m_a/dt + gamma_a m_a [m^2/s]
+    std::vector<double> x, b;  // u (then u~) [m/s], right-hand side; entry 2 k + c
     PairWorkspace work;
   } predictor_;
   std::vector<int> k_position_;     // per element 36 positions in K_'s values
@@ -151,8 +164,10 @@ class SegregatedStep {
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;
   int factor_age_ = -1;       // steps since the factorisation; -1: none
+  Eigen::VectorXd eta_rate_;  // d_eta / dt of the last step [m/s]; empty: none
   int fresh_iterations_ = 0;  // GMRES iterations of the solve that followed the factorisation
-  long elevation_iterations_ = 0, factorisations_ = 0, momentum_iterations_ = 0;
+  long elevation_iterations_ = 0, factorisations_ = 0, momentum_iterations_ = 0,
+       predictor_factorisations_ = 0;
   Loads loads_;
   Work work_;
 };

@@ -61,7 +61,8 @@ SparseMatrix assembled(const SparseMatrix& K, double s, const Vector& d,
 }
 
 TEST(IncompleteCholesky, IsExactOnATridiagonalMatrix) {
-  // 1D: the exact Cholesky factor of a tridiagonal matrix has no fill, so IC(0) is it.
+  // 1D: the exact Cholesky factor of a tridiagonal matrix has no fill, so IC(0) is it, up to
+  // its entries' rounding to single precision (relative 6e-8 each, times cond(A) = 81 here).
   const int n = 50;
   std::vector<Eigen::Triplet<double>> t;
   for (int i = 0; i + 1 < n; ++i) {
@@ -84,7 +85,7 @@ TEST(IncompleteCholesky, IsExactOnATridiagonalMatrix) {
   for (int i = 0; i < n; ++i) x[i] = std::sin(0.3 * i) + 0.01 * i;
   Vector z;
   factor.solve(A * x, z);
-  EXPECT_LT((z - x).norm() / x.norm(), 1e-12);
+  EXPECT_LT((z - x).norm() / x.norm(), 1e-5);
 }
 
 // The predictor's system on a k x k grid: mass m h^2 / dt on the diagonal (dt = 1 s, m = 1),
