@@ -61,8 +61,12 @@ struct SteadyBridge {
 
 TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
   // At the case's Re = 1000 the piers shed eddies (the paper's Fig. 16): no steady state exists.
-  // At Re = 20 on the pier diameter the wakes are steady: nu = U D / Re = 0.5 * 60 / 20.
-  SteadyBridge bridge([](Case& c) { c.flow.viscosity = 1.5; });  // [m^2/s]
+  // At Re = 20 on the pier diameter the wakes are steady: nu = U D / Re = 0.5 * 60 / 20, laminar
+  // (without the case's mixing length).
+  SteadyBridge bridge([](Case& c) {
+    c.flow.viscosity = 1.5;  // [m^2/s]
+    c.flow.turbulence = TurbulenceModel::none;
+  });
   const auto& [c, mesh, solver, steady] = bridge;
   ASSERT_TRUE(steady.converged);
   EXPECT_LE(steady.residuals.back(), 1e-8);
@@ -159,7 +163,9 @@ TEST(BridgeChannelSteady, SymmetricConservativeAndFastestInTheGaps) {
 // steady state stores no water) to 1e-6 of the discharge. Not asserted: symmetry, the Eulerian
 // form's inflow reach carries grid-scale wiggles at this Reynolds number (docs/model.md).
 TEST(BridgeChannelSteady, PapersMixingLengthAtRe1000ConvergesWithoutContinuation) {
-  SteadyBridge bridge([](Case& c) { c.flow.turbulence = TurbulenceModel::mixing_length; });
+  SteadyBridge bridge([](Case& c) {  // the case's own closure, asserted rather than assumed
+    ASSERT_EQ(c.flow.turbulence, TurbulenceModel::mixing_length);
+  });
   const auto& [c, mesh, solver, steady] = bridge;
   ASSERT_TRUE(steady.converged);
   EXPECT_LE(steady.residuals.back(), 1e-8);
