@@ -419,10 +419,11 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
   for (const auto& node : s.bc_.velocity_nodes) w.fixed[node_order_[node.node]] = 1;
   w.A.resize(N2);  // [m^2/s] in K_'s order
   for (int a = 0; a < N2; ++a) w.A[node_order_[a]] = (*in.A)[a];
-  const bool fresh = predictor_age_ < 0 || w.fixed != factor_fixed_;
+  const bool fresh = predictor_stale_ || w.fixed != factor_fixed_;
   if (fresh) {
     predictor_factor_.factorise(K_, 1.0, w.A, w.fixed);
     factor_fixed_ = w.fixed;
+    predictor_stale_ = false;
     ++predictor_factorisations_;
   }
   w.x.resize(2 * static_cast<size_t>(N2));  // u~, interleaved (entry 2 k + c)
@@ -455,11 +456,10 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
     momentum_iterations_ += iterations[c];
   }
   const int most = std::max(iterations[0], iterations[1]);
-  if (fresh) predictor_fresh_iterations_ = most;
-  // Aged too far: the next step makes a fresh factor.
-  predictor_age_ = fresh                                                       ? 0
-                   : most > predictor_fresh_iterations_ + max_extra_iterations ? -1
-                                                                               : predictor_age_ + 1;
+  if (fresh)
+    predictor_fresh_iterations_ = most;
+  else if (most > predictor_fresh_iterations_ + max_extra_iterations)
+    predictor_stale_ = true;  // aged too far: the next step makes a fresh factor
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     u[a] = w.x[2 * k];
@@ -673,7 +673,10 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     // The first iterate: the surface's last rate of change times dt (it changes smoothly from
     // step to step; zero at the first step and after refactorise(), so that a restart continues
     // bit for bit), with the elevation boundaries' known values.
-    w.guess = eta_rate_.size() == N1 ? Vector(eta_rate_ * dt) : Vector::Zero(N1);
+    if (eta_rate_.size() == N1)
+      w.guess.noalias() = eta_rate_ * dt;
+    else
+      w.guess.setZero(N1);
     for (const auto& node : s.bc_.elevation_nodes) w.guess[node.vertex] = d_eta[node.vertex];
     d_eta = solve_elevation(
         S_, w.b_free, [&](const Vector& x, Vector& y) { y.noalias() = system * x; }, w.guess);
@@ -690,9 +693,9 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
       next.v[a] = P_after ? (*P_after * u_new).y() : u_new.y();
     }
     for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
-    eta_rate_ = d_eta / dt;
     next.time = it.t_new;
     s.check_state(next, it.t_new);
+    eta_rate_.noalias() = d_eta / dt;  // a step that failed leaves the last one's
 
     // Water balance (water_balance.hpp): open boundaries (10), and the elevation boundaries'
     // rows of (M-22) as assembled, (S - C) d_eta - b, the outflow through each such vertex.

@@ -67,7 +67,8 @@ class SegregatedStep {
   StepReport step(ShallowWaterSolver& solver, double dt);
   /// The next step factorises afresh (a restart must continue bit for bit).
   void refactorise() {
-    factor_age_ = predictor_age_ = -1;
+    factor_age_ = -1;
+    predictor_stale_ = true;
     eta_rate_.resize(0);
   }
 
@@ -150,7 +151,7 @@ class SegregatedStep {
   // beyond the solve that followed it, or when the fixed nodes change.
   IncompleteCholesky predictor_factor_;
   std::vector<char> factor_fixed_;  // the fixed nodes the factor was made with
-  int predictor_age_ = -1;          // steps since the factorisation; -1: none
+  bool predictor_stale_ = true;     // none yet, or aged too far: make one at the next step
   int predictor_fresh_iterations_ = 0;
   struct Predictor {           // (M-21)'s vectors, in K_'s order, kept across steps
     std::vector<char> fixed;   // velocity nodes
