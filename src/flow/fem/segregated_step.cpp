@@ -224,15 +224,35 @@ SegregatedStep::SegregatedStep(const ShallowWaterSolver& solver) : mesh_(solver.
   K_ = column_assembled(N2, N2, at_new_start, at_new, [&](int e, int, auto add) {
     for (int b : mesh_.elements[e]) add(node_order_[b], 0.0);
   });
+  // K_nu is assembled by the elements in the order of their first node in K_'s order, so that
+  // its additions stay within a band of K_'s values rather than jump across all of them.
+  k_elements_.resize(E);
+  {
+    std::vector<int> first(E);
+    for (int e = 0; e < E; ++e) {
+      first[e] = N2;
+      for (int a : mesh_.elements[e]) first[e] = std::min(first[e], node_order_[a]);
+      k_elements_[e] = e;
+    }
+    std::stable_sort(k_elements_.begin(), k_elements_.end(),
+                     [&](int d, int e) { return first[d] < first[e]; });
+  }
+  {
+    std::vector<double> by_element(21 * static_cast<size_t>(E));
+    for (int i = 0; i < E; ++i)
+      std::copy_n(k_geometry_.begin() + 21 * static_cast<ptrdiff_t>(k_elements_[i]), 21,
+                  by_element.begin() + 21 * static_cast<ptrdiff_t>(i));
+    k_geometry_.swap(by_element);
+  }
   k_position_.resize(36 * static_cast<size_t>(E));
-  for (int e = 0; e < E; ++e) {
-    const auto& el = mesh_.elements[e];
+  for (int i = 0; i < E; ++i) {
+    const auto& el = mesh_.elements[k_elements_[i]];
     for (int a = 0; a < 6; ++a)
       for (int b = 0; b < 6; ++b) {
         const int column = node_order_[el[b]];
         const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[column];
         const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[column + 1];
-        k_position_[36 * e + 6 * a + b] =
+        k_position_[36 * i + 6 * a + b] =
             static_cast<int>(std::lower_bound(begin, end, node_order_[el[a]]) - K_.innerIndexPtr());
       }
   }
@@ -315,7 +335,7 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
   loads.source.setZero(mesh_.vertex_count);
   const bool constant_k = flow.turbulence == TurbulenceModel::none;
   const bool assemble_k = !(constant_k && k_viscosity_ == flow.viscosity);
-  if (assemble_k) std::fill(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), 0.0);
+  element_viscosity_.resize(mesh_.element_count());
   AssemblyParameters p;
   p.friction = FrictionModel::from(flow);
   const Vec2 wind_stress = air_density / flow.water_density * wind_drag_coefficient *
@@ -392,16 +412,27 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
       }
       for (int i = 0; i < 3; ++i) loads.source[el[i]] += ev.N1[q][i] * S * JxW;  // (11)
     }
-    for (int a = 0, ab = 21 * e; a < 6 && assemble_k; ++a)  // (4), (nu_e grad u, grad w)
-      for (int b = a; b < 6; ++b, ++ab) {
-        const double k = nu_e * k_geometry_[ab];
-        K_.valuePtr()[k_position_[36 * e + 6 * a + b]] += k;
-        if (b != a) K_.valuePtr()[k_position_[36 * e + 6 * b + a]] += k;
-      }
+    element_viscosity_[e] = nu_e;
     // (7) in M_L's nodal quadrature, as the slope (3) is (G): each node takes its share of the
     // element's force, so that a forced state at rest (wind set-up) balances node by node.
     for (int a = 0; a < 6; ++a) loads.force[el[a]] += diagonal[a] / diagonal_sum * total_force;
   });
+  if (assemble_k) {  // (4), (nu_e grad u, grad w), by the elements in k_elements_'s order
+    double* K = K_.valuePtr();
+    std::fill(K, K + K_.nonZeros(), 0.0);
+    const double* geometry = k_geometry_.data();
+    const int* position = k_position_.data();
+    for (int e : k_elements_) {
+      const double nu_e = element_viscosity_[e];
+      for (int a = 0; a < 6; ++a)
+        for (int b = a; b < 6; ++b, ++geometry) {
+          const double k = nu_e * *geometry;
+          K[position[6 * a + b]] += k;
+          if (b != a) K[position[6 * b + a]] += k;
+        }
+      position += 36;
+    }
+  }
   k_viscosity_ = constant_k ? flow.viscosity : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -429,17 +460,23 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
   w.x.resize(2 * static_cast<size_t>(N2));  // u~, interleaved (entry 2 k + c)
   w.b.resize(2 * static_cast<size_t>(N2));
   const double s_node = (1.0 - in.slope_at_feet) * in.g;
+  // The first iterate: the boundary values at fixed nodes, elsewhere u_d, the flow arriving
+  // along the paths, plus the last step's (u~ - u_d) inv_dt over inv_dt: the slope, the viscous
+  // and the friction terms change little from one step to the next (a fifth fewer iterations
+  // over the paper's channel's hour than from u_d alone; none at the first step and after
+  // refactorise(), so that a restart continues bit for bit).
+  const bool last = w.rate.size() == w.x.size();
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     const Vec2& force = in.loads->force[a];
-    for (int c = 0; c < 2; ++c)
-      w.b[2 * k + c] = m_[a] * (c == 0 ? s.u_departure_ : s.v_departure_)[a] * in.inv_dt  // (1)
-                       - s_node * (*in.G_eta)[2 * a + c]  // (3) node, t^n
-                       + force[c];                        // (4) T_nu, (7)
-    // The first iterate: the boundary values at fixed nodes, elsewhere u_d, the flow arriving
-    // along the paths (closer to u~ than u^n where the flow is carried).
-    w.x[2 * k] = w.fixed[k] ? u[a] : s.u_departure_[a];
-    w.x[2 * k + 1] = w.fixed[k] ? v[a] : s.v_departure_[a];
+    for (int c = 0; c < 2; ++c) {
+      const double u_d = (c == 0 ? s.u_departure_ : s.v_departure_)[a];  // [m/s]
+      w.b[2 * k + c] = m_[a] * u_d * in.inv_dt                           // (1)
+                       - s_node * (*in.G_eta)[2 * a + c]                 // (3) node, t^n
+                       + force[c];                                       // (4) T_nu, (7)
+      w.x[2 * k + c] =
+          w.fixed[k] ? (c == 0 ? u : v)[a] : u_d + (last ? w.rate[2 * k + c] / in.inv_dt : 0.0);
+    }
   }
   const auto apply = [&](const std::vector<double>& p, std::vector<double>& y) {
     return pair_product(K_, 1.0, w.A.data(), &w.fixed, p, y);  // (4) (1) (5)
@@ -460,10 +497,13 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
     predictor_fresh_iterations_ = most;
   else if (most > predictor_fresh_iterations_ + max_extra_iterations)
     predictor_stale_ = true;  // aged too far: the next step makes a fresh factor
+  w.rate_new.resize(w.x.size());
   for (int a = 0; a < N2; ++a) {
     const int k = node_order_[a];
     u[a] = w.x[2 * k];
     v[a] = w.x[2 * k + 1];
+    w.rate_new[2 * k] = (u[a] - s.u_departure_[a]) * in.inv_dt;
+    w.rate_new[2 * k + 1] = (v[a] - s.v_departure_[a]) * in.inv_dt;
   }
 }
 
@@ -695,7 +735,8 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     for (int j = 0; j < N1; ++j) next.eta[j] = n.eta[j] + d_eta[j];
     next.time = it.t_new;
     s.check_state(next, it.t_new);
-    eta_rate_.noalias() = d_eta / dt;  // a step that failed leaves the last one's
+    eta_rate_.noalias() = d_eta / dt;  // a step that failed leaves the last ones
+    predictor_.rate.swap(predictor_.rate_new);
 
     // Water balance (water_balance.hpp): open boundaries (10), and the elevation boundaries'
     // rows of (M-22) as assembled, (S - C) d_eta - b, the outflow through each such vertex.

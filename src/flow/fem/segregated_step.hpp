@@ -69,6 +69,7 @@ class SegregatedStep {
   void refactorise() {
     factor_age_ = -1;
     predictor_stale_ = true;
+    predictor_.rate.clear();
     eta_rate_.resize(0);
   }
 
@@ -157,10 +158,14 @@ class SegregatedStep {
     std::vector<char> fixed;   // velocity nodes
     Eigen::VectorXd A;         // m_a/dt + gamma_a m_a [m^2/s]
     std::vector<double> x, b;  // u (then u~) [m/s], right-hand side; entry 2 k + c
+    // (u~ - u_d) inv_dt of the last step, and of this one until it is accepted [m s^-2]
+    std::vector<double> rate, rate_new;
     PairWorkspace work;
   } predictor_;
-  std::vector<int> k_position_;     // per element 36 positions in K_'s values
-  std::vector<double> k_geometry_;  // per element (grad N_a, grad N_b), b >= a: 21 [-]
+  std::vector<int> k_elements_;     // the elements in the order K_ is assembled by
+  std::vector<int> k_position_;     // per element in that order, 36 positions in K_'s values
+  std::vector<double> k_geometry_;  // per element in that order, (grad N_a, grad N_b), b >= a
+  std::vector<double> element_viscosity_;  // nu_e of this step, per element [m^2/s]
   double k_viscosity_ = std::numeric_limits<double>::quiet_NaN();  // K_'s constant nu [m^2/s]
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SparseMatrix>> factor_;
   Eigen::Index analysed_nonzeros_ = -1;

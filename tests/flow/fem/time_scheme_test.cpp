@@ -24,24 +24,29 @@ Case channel(const TimeSeries& discharge) {
 }
 
 TEST(Bdf2, RestartFromAStateAndTheOneBeforeGoesOnBitForBit) {
+  // Both steps: the segregated one also carries guesses from step to step (the surface's rate,
+  // the predictor's increment), which a checkpoint must reset as a restart starts without them.
   const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 200.0, 40.0, 20, 6, true});
-  Case c = channel(TimeSeries({{0.0, 0.0}, {40.0, 30.0}}));
-  c.time.scheme = TimeScheme::bdf2;
-  ShallowWaterSolver run(mesh, c);
-  run.initialize();
-  for (int n = 0; n < 3; ++n) run.step(5.0);
-  const FlowState at = run.state(), before = run.previous_state();
-  run.start_fresh_factorisation();  // as at a checkpoint
-  for (int n = 0; n < 3; ++n) run.step(5.0);
+  for (FlowScheme scheme : {FlowScheme::coupled, FlowScheme::segregated}) {
+    Case c = channel(TimeSeries({{0.0, 0.0}, {40.0, 30.0}}));
+    c.time.scheme = TimeScheme::bdf2;
+    c.flow.scheme = scheme;
+    ShallowWaterSolver run(mesh, c);
+    run.initialize();
+    for (int n = 0; n < 3; ++n) run.step(5.0);
+    const FlowState at = run.state(), before = run.previous_state();
+    run.start_fresh_factorisation();  // as at a checkpoint
+    for (int n = 0; n < 3; ++n) run.step(5.0);
 
-  ShallowWaterSolver restarted(mesh, c);
-  restarted.initialize();
-  restarted.set_state(at, &before);
-  for (int n = 0; n < 3; ++n) restarted.step(5.0);
-  ASSERT_GT(std::abs(run.u()[0]), 0.0);  // the flow has moved
-  EXPECT_EQ(restarted.eta(), run.eta());
-  EXPECT_EQ(restarted.u(), run.u());
-  EXPECT_EQ(restarted.v(), run.v());
+    ShallowWaterSolver restarted(mesh, c);
+    restarted.initialize();
+    restarted.set_state(at, &before);
+    for (int n = 0; n < 3; ++n) restarted.step(5.0);
+    ASSERT_GT(std::abs(run.u()[0]), 0.0);  // the flow has moved
+    EXPECT_EQ(restarted.eta(), run.eta()) << static_cast<int>(scheme);
+    EXPECT_EQ(restarted.u(), run.u()) << static_cast<int>(scheme);
+    EXPECT_EQ(restarted.v(), run.v()) << static_cast<int>(scheme);
+  }
 }
 
 TEST(Bdf2, FirstStepIsBackwardEulerOverTwoThirdsOfTheStep) {
