@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "flow/fem/node_ordering.hpp"
 #include "flow/fem/pair_conjugate_gradients.hpp"
+#include "flow/fem/serial_blas.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "flow/fem/turbulence.hpp"
 
@@ -510,6 +511,7 @@ void SegregatedStep::predict_velocity(const ShallowWaterSolver& s, const Predict
 Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vector& b,
                                                 const Operator& apply, const Vector& guess) {
   const auto factorise = [&] {
+    const SerialBlas serial;
     if (!factor_) factor_ = std::make_unique<Eigen::CholmodSupernodalLLT<SparseMatrix>>();
     if (analysed_nonzeros_ != S.nonZeros()) {
       factor_->analyzePattern(S);
@@ -524,7 +526,10 @@ Eigen::VectorXd SegregatedStep::solve_elevation(const SparseMatrix& S, const Vec
   };
   const bool fresh = factor_age_ < 0;
   if (fresh) factorise();
-  const auto precondition = [&](const Vector& r, Vector& z) { z = factor_->solve(r); };
+  const auto precondition = [&](const Vector& r, Vector& z) {
+    const SerialBlas serial;
+    z = factor_->solve(r);
+  };
   // Refactorised when the aged factor needs more iterations than a fresh one did, plus a margin
   // (the part C that the factor leaves out sets how many a fresh one needs).
   const int allowed = fresh ? max_fresh_iterations : fresh_iterations_ + max_extra_iterations;

@@ -8,6 +8,8 @@
 #include <Eigen/UmfPackSupport>
 #include <vector>
 
+#include "flow/fem/serial_blas.hpp"
+
 namespace flotsam {
 
 namespace {
@@ -90,6 +92,7 @@ SparseDirectSolver::SparseDirectSolver(SparseDirectSolver&&) noexcept = default;
 SparseDirectSolver& SparseDirectSolver::operator=(SparseDirectSolver&&) noexcept = default;
 
 bool SparseDirectSolver::factorize(const SparseMatrix& A) {
+  const SerialBlas serial;
   Impl& s = *impl_;
   failure_ = FactorizationFailure::none;
   failure_message_.clear();
@@ -138,6 +141,7 @@ bool SparseDirectSolver::factorize(const SparseMatrix& A) {
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& b) const {
+  const SerialBlas serial;
   if (impl_->kind == LinearSolverKind::umfpack) return impl_->umfpack.solve(b);
   return impl_->klu.solve(b);
 }
