@@ -7,18 +7,23 @@
 namespace flotsam {
 
 // K is symmetric: its column i is its row i, and the entries with index <= i form row i of the
-// lower triangle, in increasing column, the diagonal last.
+// lower triangle, in increasing column, the diagonal last; those of i's part are L's row i.
 void IncompleteCholesky::analyse(const SparseMatrix& K) {
   const int n = static_cast<int>(K.cols());
-  outer_ = K.outerIndexPtr();
+  const int* outer = K.outerIndexPtr();
   index_ = K.innerIndexPtr();
+  parts_ = RowParts(n);
+  k_start_.assign(n, 0);
   row_start_.assign(n + 1, 0);
   for (int i = 0; i < n; ++i) {
-    int p = outer_[i];
-    while (p < outer_[i + 1] && index_[p] < i) ++p;
-    if (p == outer_[i + 1] || index_[p] != i)
+    const int first = parts_.start[parts_.part_of(i)];  // the part's first row
+    int p = outer[i];
+    while (p < outer[i + 1] && index_[p] < first) ++p;
+    k_start_[i] = p;
+    while (p < outer[i + 1] && index_[p] < i) ++p;
+    if (p == outer[i + 1] || index_[p] != i)
       throw_run_error("incomplete Cholesky: row {} of the pattern has no diagonal entry", i);
-    row_start_[i + 1] = row_start_[i] + (p - outer_[i]) + 1;
+    row_start_[i + 1] = row_start_[i] + (p - k_start_[i]) + 1;
   }
   value_.assign(static_cast<size_t>(row_start_[n]), 0.0f);
   marker_.assign(n, -1);
@@ -42,7 +47,7 @@ bool IncompleteCholesky::try_factorise(const SparseMatrix& K, double s, const Ei
   const int n = static_cast<int>(row_start_.size()) - 1;
   for (int i = 0; i < n; ++i) {
     const int begin = row_start_[i], diagonal = row_start_[i + 1] - 1;
-    const double* k = K.valuePtr() + outer_[i] - begin;  // k[p]: K's value of L's entry p
+    const double* k = K.valuePtr() + k_start_[i] - begin;  // k[p]: K's value of L's entry p
     if (fixed[i]) {
       for (int p = begin; p < diagonal; ++p) value_[p] = 0.0f;
       value_[diagonal] = 1.0f;
@@ -86,38 +91,40 @@ void IncompleteCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) con
   }
 }
 
-// solve's two sweeps on both components: component c's operations are those of solve on it.
+// solve's two sweeps on both components, part by part (no entry of L couples two parts):
+// component c's operations are those of solve on it.
 std::array<double, 2> IncompleteCholesky::solve_pair(const std::vector<double>& r,
                                                      std::vector<double>& z) const {
-  const int n = static_cast<int>(row_start_.size()) - 1;
-  for (int i = 0; i < n; ++i) {  // L y = r
-    double sum_0 = r[2 * i], sum_1 = r[2 * i + 1];
-    const int diagonal = row_start_[i + 1] - 1;
-    const int* index = index_ + outer_[i] - row_start_[i];  // index[p]: column of entry p
-    for (int p = row_start_[i]; p < diagonal; ++p) {
-      const int j = index[p];
-      sum_0 -= l(p) * z[2 * j];
-      sum_1 -= l(p) * z[2 * j + 1];
+  return sum_over_parts(parts_, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {  // L y = r
+      double sum_0 = r[2 * i], sum_1 = r[2 * i + 1];
+      const int diagonal = row_start_[i + 1] - 1;
+      const int* index = index_ + k_start_[i] - row_start_[i];  // index[p]: column of entry p
+      for (int p = row_start_[i]; p < diagonal; ++p) {
+        const int j = index[p];
+        sum_0 -= l(p) * z[2 * j];
+        sum_1 -= l(p) * z[2 * j + 1];
+      }
+      z[2 * i] = sum_0 / l(diagonal);
+      z[2 * i + 1] = sum_1 / l(diagonal);
     }
-    z[2 * i] = sum_0 / l(diagonal);
-    z[2 * i + 1] = sum_1 / l(diagonal);
-  }
-  std::array<double, 2> rz{0.0, 0.0};
-  for (int i = n - 1; i >= 0; --i) {  // L^T z = y, by rows of L; z_i is final once divided
-    const int diagonal = row_start_[i + 1] - 1;
-    const int* index = index_ + outer_[i] - row_start_[i];
-    const double z_0 = z[2 * i] / l(diagonal), z_1 = z[2 * i + 1] / l(diagonal);
-    z[2 * i] = z_0;
-    z[2 * i + 1] = z_1;
-    rz[0] += r[2 * i] * z_0;
-    rz[1] += r[2 * i + 1] * z_1;
-    for (int p = row_start_[i]; p < diagonal; ++p) {
-      const int j = index[p];
-      z[2 * j] -= l(p) * z_0;
-      z[2 * j + 1] -= l(p) * z_1;
+    std::array<double, 2> rz{0.0, 0.0};
+    for (int i = end - 1; i >= begin; --i) {  // L^T z = y, by rows of L; z_i final once divided
+      const int diagonal = row_start_[i + 1] - 1;
+      const int* index = index_ + k_start_[i] - row_start_[i];
+      const double z_0 = z[2 * i] / l(diagonal), z_1 = z[2 * i + 1] / l(diagonal);
+      z[2 * i] = z_0;
+      z[2 * i + 1] = z_1;
+      rz[0] += r[2 * i] * z_0;
+      rz[1] += r[2 * i + 1] * z_1;
+      for (int p = row_start_[i]; p < diagonal; ++p) {
+        const int j = index[p];
+        z[2 * j] -= l(p) * z_0;
+        z[2 * j + 1] -= l(p) * z_1;
+      }
     }
-  }
-  return rz;
+    return rz;
+  });
 }
 
 }  // namespace flotsam

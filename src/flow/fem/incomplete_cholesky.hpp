@@ -5,10 +5,15 @@
 // iterations grow with the mesh much more slowly than Jacobi's. Entries marked fixed are rows and
 // columns of the identity (Dirichlet values eliminated symmetrically). When a pivot is not
 // positive (A is not an M-matrix: IC(0) may break down), the factor is redone with the diagonal
-// raised by a shift that doubles until it succeeds (Manteuffel's shifted IC).
+// raised by a shift that doubles until it succeeds (Manteuffel's shifted IC). The rows are taken
+// in parts (row_parts.hpp) and the entries that couple a part to an earlier one dropped too: a
+// block diagonal factor whose parts are factorised and swept independently (block Jacobi between
+// the parts, IC(0) within each), on the threads for a large matrix.
 #include <Eigen/Sparse>
 #include <array>
 #include <vector>
+
+#include "flow/fem/row_parts.hpp"
 
 namespace flotsam {
 
@@ -34,12 +39,14 @@ class IncompleteCholesky {
  private:
   bool try_factorise(const SparseMatrix& K, double s, const Eigen::VectorXd& d,
                      const std::vector<char>& fixed, double shift);
-  // Row i of L is the head of K's column i (rows j <= i, the diagonal last): its column indices
-  // are K's, and row_start_ places its values in value_.
-  int column(int i, int p) const { return index_[outer_[i] + p - row_start_[i]]; }
+  // Row i of L is a run of K's column i (rows j of i's part with j <= i, the diagonal last),
+  // from K's entry k_start_[i] on: its column indices are K's, and row_start_ places its values
+  // in value_.
+  int column(int i, int p) const { return index_[k_start_[i] + p - row_start_[i]]; }
   double l(int p) const { return static_cast<double>(value_[p]); }  // L's entry p
-  const int* outer_ = nullptr;                                      // K's column starts
   const int* index_ = nullptr;                                      // K's row indices
+  RowParts parts_;
+  std::vector<int> k_start_;    // per row of L: K's entry of its first
   std::vector<int> row_start_;  // per row of L: its first entry in value_
   // L's values, in single precision: the solves' sweeps are bound by reading L, and a
   // preconditioner needs no more digits (each entry is computed in double, then rounded).

@@ -34,10 +34,11 @@
 // quadrature too. The momentum predictor is solved by conjugate gradients preconditioned with the
 // zero fill-in incomplete Cholesky factor of its matrix at an earlier step (made again when the
 // iterations grow), on the P2 nodes renumbered by locality (reverse Cuthill-McKee), u and v in one
-// sweep (pair_conjugate_gradients.hpp). C is assembled with S on S's pattern. The elevation system
-// is solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD part,
-// refactorised when GMRES needs more than max_extra_iterations beyond what it needed after the
-// last factorisation.
+// sweep (pair_conjugate_gradients.hpp), the rows in two parts swept on the threads (row_parts.hpp:
+// the factor block diagonal between them). C is assembled with S on S's pattern. The elevation
+// system is solved by GMRES preconditioned with a CHOLMOD Cholesky factor of an earlier step's SPD
+// part, refactorised when GMRES needs more than max_extra_iterations beyond what it needed after
+// the last factorisation.
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <array>
