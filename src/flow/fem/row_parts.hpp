@@ -7,9 +7,9 @@
 // one, so that its triangular sweeps run part by part too (on the nodes in reverse
 // Cuthill-McKee order a part's rows couple to the part before it only across one level of the
 // ordering: a few hundred entries of millions at 500k elements).
-#include <omp.h>
-
 #include <array>
+
+#include "core/parallel_for.hpp"
 
 namespace flotsam {
 
@@ -40,12 +40,10 @@ struct RowParts {
 template <class Sweep>
 std::array<double, 2> sum_over_parts(const RowParts& parts, const Sweep& sweep) {
   std::array<std::array<double, 2>, RowParts::count> sums{};
-  if (parts.rows() >= RowParts::parallel_rows) {
-#pragma omp parallel for schedule(static)
-    for (int p = 0; p < RowParts::count; ++p) sums[p] = sweep(parts.start[p], parts.start[p + 1]);
-  } else {
-    for (int p = 0; p < RowParts::count; ++p) sums[p] = sweep(parts.start[p], parts.start[p + 1]);
-  }
+  // parallel_for's threshold is on its items, the parts: all of them, or more than there are.
+  const int threshold = parts.rows() >= RowParts::parallel_rows ? 0 : RowParts::count + 1;
+  parallel_for(RowParts::count, threshold,
+               [&](int p) { sums[p] = sweep(parts.start[p], parts.start[p + 1]); });
   std::array<double, 2> total{0.0, 0.0};
   for (const auto& s : sums) {
     total[0] += s[0];
