@@ -122,6 +122,15 @@ bench: build
 	    --members $$m --jobs $$j -q --no-pictures \
 	    | grep -E "^ensemble|^members|^flow|wall time"; done
 	@rm -rf $(BUILD)/bench_runs/bridge_blocking_1.old $(BUILD)/bench_runs/bridge_blocking_2.old
+	@echo "== the town's road bridge with and without its deck (examples/town_flood, first 20"
+	@echo "   minutes, run twice each, alternated): the flow stage (docs/performance.md, Bridges)"
+	@mkdir -p $(BUILD)/bench_runs/town
+	@/usr/bin/python3 examples/town_flood/make_inputs.py --out $(BUILD)/bench_runs/town/data > /dev/null
+	@cp examples/town_flood/town_flood.yaml $(BUILD)/bench_runs/town/town_deck.yaml
+	@sed '/^    deck: /d' examples/town_flood/town_flood.yaml > $(BUILD)/bench_runs/town/town_no_deck.yaml
+	@for c in town_no_deck town_deck town_no_deck town_deck; do echo "$$c:"; \
+	    $(BUILD)/flotsam run $(BUILD)/bench_runs/town/$$c.yaml -o $(BUILD)/bench_runs/town/$$c \
+	    --end 1200 --overwrite -q | grep -E "finite volumes|wall time"; done
 	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \
 	          $(BUILD)/bench_runs/bridge_piers_fv.yaml $(BUILD)/bench_runs/bridge_flood_fv.yaml \
 	          examples/dam_break_valley.yaml; do \

@@ -15,6 +15,8 @@ A synthetic valley, nothing downloaded, the same files at every run:
                     buildings   32 footprints in eight blocks, streets between them, a few turned
                     piers       the bridge's three circular piers as polygons (for the map; the
                                 case gives them as circles, mesh.region.piers)
+                    bridges     the road bridge's axis (a line from its right abutment to its
+                                left one, looking downstream), attribute name (the case's bridges)
                     landuse     attribute manning_n: channel 0.03, floodplain grass 0.05, town
                                 streets 0.015 (for flow.friction zones)
                     parking     the parking lanes of the streets, attribute count: the cars the
@@ -289,6 +291,9 @@ def write_layers(path, srs):
     for k, (x, y) in enumerate(pier_centres()):
         add(lyr, polygon(circle(x, y, PIER_RADIUS)), id=k + 1, radius=PIER_RADIUS)
 
+    lyr = layer("bridges", ogr.wkbLineString, [("name", ogr.OFTString)])
+    add(lyr, line(bridge_axis()), name="road_bridge")
+
     lyr = layer("landuse", ogr.wkbMultiPolygon,
                 [("name", ogr.OFTString), ("manning_n", ogr.OFTReal)])
     for name, n, g in landuse_parts(domain):
@@ -305,6 +310,13 @@ def pier_centres():
     """Three piers across the river at the bridge, 8 m apart, the middle one on its centre line."""
     yc = float(river_centre(BRIDGE_X))
     return [(BRIDGE_X, yc - 8.0), (BRIDGE_X, yc), (BRIDGE_X, yc + 8.0)]
+
+
+def bridge_axis():
+    """The road bridge's axis, from its right (south) abutment to its left (north) one: across the
+    river 22 m wide and 4 m of floodplain on either side."""
+    yc = float(river_centre(BRIDGE_X))
+    return [(BRIDGE_X, yc - CHANNEL_HALF_WIDTH - 4.0), (BRIDGE_X, yc + CHANNEL_HALF_WIDTH + 4.0)]
 
 
 def main():
@@ -324,7 +336,7 @@ def main():
     gpkg = os.path.join(out, "town.gpkg")
     footprints = write_layers(gpkg, srs)
     print(f"wrote {gpkg}: layers domain, boundaries, buildings ({len(footprints)}), piers "
-          f"({len(pier_centres())}), landuse, parking ({sum(p[5] for p in PARKING)} cars in "
+          f"({len(pier_centres())}), bridges (1), landuse, parking ({sum(p[5] for p in PARKING)} cars in "
           f"{len(PARKING)} lanes)")
 
 

@@ -13,6 +13,19 @@ void BoundarySegments::add_segment(const Vec2& a, const Vec2& b, int group_index
   end.push_back(b);
   normal.push_back(perp(b - a).normalized());
   group.push_back(group_index);
+  if (!band_lower.empty()) {
+    band_lower.push_back(-infinity);
+    band_upper.push_back(infinity);
+  }
+}
+
+void BoundarySegments::add_banded_segment(const Vec2& a, const Vec2& b, int group_index,
+                                          double lower, double upper) {
+  band_lower.resize(start.size(), -infinity);
+  band_upper.resize(start.size(), infinity);
+  add_segment(a, b, group_index);
+  band_lower.back() = lower;
+  band_upper.back() = upper;
 }
 
 void BoundarySegments::add_circle_hole(const Vec2& centre, double radius, int sides,

@@ -3,6 +3,7 @@
 // or `noslip` group, banks and pier holes alike, a curved P2 edge split at its mid node into two
 // segments. Segments never move, so they are bucketed once in a uniform grid (spec 4.2) and a
 // body asks the grid for the segments near its bounding box.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct BoundarySegments {
   std::vector<Vec2> normal;      // unit, pointing into the water
   std::vector<int> group;        // boundary group (Mesh::group_names index, or the caller's)
   std::vector<std::string> group_names;
+  // The vertical band [m] in which a segment stops bodies (a bridge deck from its soffit to its
+  // railing's top; bridges/deck_contact.hpp): empty while every segment stops every body.
+  std::vector<double> band_lower, band_upper;
 
   // Uniform grid, built by build_grid(): cell (i, j) holds the segments whose box meets it,
   // listed in cell_segments[cell_start[c] .. cell_start[c + 1]).
@@ -40,6 +44,21 @@ struct BoundarySegments {
 
   /// Appends the segment a -> b (water on its left) in `group`.
   void add_segment(const Vec2& a, const Vec2& b, int group_index);
+
+  /// Appends a segment that stops only the bodies whose vertical extent meets [lower, upper] [m]
+  /// and whose centre is on its water side (a deck's face).
+  void add_banded_segment(const Vec2& a, const Vec2& b, int group_index, double lower,
+                          double upper);
+
+  /// Whether segment s stops a body with centre `centre` and vertical extent [bottom, top] [m]:
+  /// always for a plain wall; for a banded one when the extents overlap and the centre is on the
+  /// water side.
+  bool stops(int s, const Vec2& centre, double bottom, double top) const {
+    if (band_lower.empty() || (band_lower[s] == -infinity && band_upper[s] == infinity))
+      return true;
+    return top > band_lower[s] && bottom < band_upper[s] && normal[s].dot(centre - start[s]) > 0.0;
+  }
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
 
   /// Appends a circular hole (a pier) as `sides` segments whose normals point away from the
   /// centre; the polygon's vertices lie on the circle.

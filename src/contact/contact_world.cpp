@@ -245,10 +245,15 @@ void ContactWorld::find_pairs(const BoundarySegments& walls) {
         q.found.resize(static_cast<std::size_t>(walls.size()));
         for (int s = 0; s < walls.size(); ++s) q.found[s] = s;
       }
+      const bool levelled = static_cast<std::size_t>(i) < level_bottom_.size();
       for (const int s : q.found) {
         const Aabb segment_box{walls.start[s].cwiseMin(walls.end[s]),
                                walls.start[s].cwiseMax(walls.end[s])};
-        if (segment_box.overlaps(boxes_[i])) q.pairs.emplace_back(i, s);
+        if (!segment_box.overlaps(boxes_[i])) continue;
+        if (levelled &&
+            !walls.stops(s, rectangles_[i].frame.origin, level_bottom_[i], level_top_[i]))
+          continue;
+        q.pairs.emplace_back(i, s);
       }
     }
   };

@@ -81,6 +81,13 @@ class ContactWorld {
 
   void set_broad_phase(BroadPhase method) { broad_phase_ = method; }
 
+  /// The z of each body's underside and top [m], for the walls that stop bodies only in a band
+  /// of heights (BoundarySegments::stops: a bridge deck's face). A body without levels is stopped.
+  void set_body_levels(std::vector<double> bottom, std::vector<double> top) {
+    level_bottom_ = std::move(bottom);
+    level_top_ = std::move(top);
+  }
+
   /// What the next step starts from besides the bodies: the last contacts (warm start) and the
   /// sweep order. A checkpoint keeps it; restore() puts it back.
   const SweepAndPrune& sweep() const { return sweep_; }
@@ -144,6 +151,7 @@ class ContactWorld {
   std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
   std::vector<int> grown_;         // the bodies whose reach_ the last step grew
   std::vector<double> lengths_;    // h per body [s]
+  std::vector<double> level_bottom_, level_top_;  // [m] per body (set_body_levels)
   struct WallQuery {  // one thread's grid query (BoundarySegments::query) and the pairs it found
     std::vector<int> found, stamp;
     int stamp_value = 0;

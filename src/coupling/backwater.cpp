@@ -72,28 +72,28 @@ double mean_eta_along(const FlowField& flow, double t, const Vec2& a, const Vec2
   return check_mean(sum, inside, a, b);
 }
 
-BackwaterProbe::BackwaterProbe(const Mesh& mesh, const JamGeometry& geometry,
-                               BackwaterOptions options)
+BackwaterProbe::BackwaterProbe(const Mesh& mesh, const JamGeometry& geometry, int samples)
     : mesh_(&mesh) {
   const PointLocator locator(mesh);
-  for (const BridgeLine& bridge : geometry.bridges) {
-    const double x = bridge.x - options.upstream_diameters * 2.0 * bridge.max_radius;  // [m]
+  for (const Bridge& bridge : geometry.bridges) {
+    const Vec2 offset = bridge.backwater_distance * bridge.downstream;  // [m]
     Section section{.bridge = bridge.name,
-                    .a = Vec2(x, geometry.y_lower),
-                    .b = Vec2(x, geometry.y_upper),
+                    .a = bridge.start - offset,
+                    .b = bridge.end - offset,
                     .locations = {}};
     int hint = -1;
-    for (const Vec2& p : line_sample_points(section.a, section.b, options.samples)) {
+    for (const Vec2& p : line_sample_points(section.a, section.b, samples)) {
       const Location l = locator.locate(p, hint);
       hint = l.element;
       if (l.inside) section.locations.push_back(l);
     }
     if (section.locations.empty())
       throw_input_error(
-          "{}: the backwater section of {} (x = {} m, {} diameters of {} m upstream of its "
-          "piers, y from {} to {} m) lies outside the mesh; set it closer to the bridge",
-          mesh.source, bridge.name, x, options.upstream_diameters, 2.0 * bridge.max_radius,
-          geometry.y_lower, geometry.y_upper);
+          "{}: the backwater section of bridge '{}', {} m upstream of its axis, from ({}, {}) to "
+          "({}, {}) m, lies outside the mesh; set the bridge's backwater_distance so that it "
+          "crosses the river",
+          mesh.source, bridge.name, bridge.backwater_distance, section.a.x(), section.a.y(),
+          section.b.x(), section.b.y());
     sections_.push_back(std::move(section));
   }
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Backwater (spec 6.3): the rise of the water surface upstream of each bridge line that the
+// Backwater (spec 6.3): the rise of the water surface upstream of each bridge that the
 // bodies cause, measured as the mean of eta over a cross-section of the channel, with bodies,
 // minus the same mean in a reference flow without bodies (the caller runs it alongside and
 // hands its eta field over). Definitions in docs/model.md, "Jam statistics".
@@ -32,23 +32,20 @@ double mean_eta_along(const Mesh& mesh, const PointLocator& locator, std::span<c
 /// The same through the engine's interface, at time t [s] of its current step.
 double mean_eta_along(const FlowField& flow, double t, const Vec2& a, const Vec2& b, int samples);
 
-struct BackwaterOptions {
-  double upstream_diameters = 2.0;  // [-] section distance upstream of the pier centres, in
-                                    // diameters 2 r_max of the line's largest pier
-  int samples = 200;                // [-] points on the section (midpoint rule)
-};
-
-/// One cross-section per bridge line, across the full width [y_lower, y_upper] at
-/// x = bridge.x - upstream_diameters * 2 * bridge.max_radius. The sample points are located
-/// once; evaluating a field is then a sum over them.
+/// One cross-section per bridge, parallel to its axis and as long, bridge.backwater_distance
+/// upstream of it (bridges/bridge.hpp; on the paper's channel two diameters of the widest pier
+/// upstream of the piers' centres, across the full width). The sample points are located once;
+/// evaluating a field is then a sum over them.
 class BackwaterProbe {
  public:
+  static constexpr int default_samples = 200;  // [-] points on a section (midpoint rule)
+
   /// Keeps a pointer to `mesh`, which must outlive the probe. InputError naming the bridge and
   /// the section when a section has no point inside the mesh.
-  BackwaterProbe(const Mesh& mesh, const JamGeometry& geometry, BackwaterOptions options = {});
+  BackwaterProbe(const Mesh& mesh, const JamGeometry& geometry, int samples = default_samples);
 
   struct Section {
-    std::string bridge;               // the bridge line's name
+    std::string bridge;               // the bridge's name
     Vec2 a = Vec2::Zero();            // [m] section end on the right bank
     Vec2 b = Vec2::Zero();            // [m] section end on the left bank
     std::vector<Location> locations;  // the sample points inside the mesh

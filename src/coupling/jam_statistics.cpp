@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "bridges/bridge_layout.hpp"
 #include "core/error.hpp"
 
 namespace flotsam {
@@ -27,47 +28,13 @@ int require_group(const std::vector<std::string>& group_names, const std::string
   return static_cast<int>(it - group_names.begin());
 }
 
-/// Groups pier indices (into `piers`) into lines across the channel: sorted by centre x, a pier
-/// joins the line of the previous one when their x differ by less than the smaller radius.
-std::vector<std::vector<int>> group_into_lines(const std::vector<Pier>& piers) {
-  std::vector<int> order(piers.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return piers[a].centre.x() < piers[b].centre.x(); });
-  std::vector<std::vector<int>> lines;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const Pier& p = piers[order[k]];
-    const Pier* previous = k > 0 ? &piers[order[k - 1]] : nullptr;
-    if (previous == nullptr ||
-        p.centre.x() - previous->centre.x() >= std::min(p.radius, previous->radius))
-      lines.emplace_back();
-    lines.back().push_back(order[k]);
-  }
-  return lines;
-}
-
-/// The free gaps of one line: the obstacles bank_right (y <= y_lower), the piers' y-intervals
-/// [y_c - r, y_c + r] and bank_left (y >= y_upper), walked by y; overlapping obstacles leave no
-/// gap between them.
-std::vector<Gap> line_gaps(const std::vector<Pier>& piers, std::vector<int>& line,
-                           const JamGeometry& g, int right_bank, int left_bank,
-                           const std::vector<int>& pier_solid) {
-  std::sort(line.begin(), line.end(),
-            [&](int a, int b) { return piers[a].centre.y() < piers[b].centre.y(); });
-  std::vector<Gap> gaps;
-  double cursor = g.y_lower;  // [m] upper end of the obstacles so far
-  int cursor_solid = right_bank;
-  for (const int p : line) {
-    const double lower = piers[p].centre.y() - piers[p].radius;
-    const double upper = piers[p].centre.y() + piers[p].radius;
-    if (lower > cursor) gaps.push_back({cursor, lower, cursor_solid, pier_solid[p]});
-    if (upper >= cursor) {
-      cursor = upper;
-      cursor_solid = pier_solid[p];
+/// Each bridge's piers are piers, and know their bridge.
+void mark_piers(JamGeometry& g) {
+  for (std::size_t b = 0; b < g.bridges.size(); ++b)
+    for (const int s : g.bridges[b].piers) {
+      g.solids[s].kind = SolidKind::pier;
+      g.solids[s].bridge = static_cast<int>(b);
     }
-  }
-  if (g.y_upper > cursor) gaps.push_back({cursor, g.y_upper, cursor_solid, left_bank});
-  return gaps;
 }
 
 SolidKind kind_from_name(const std::string& name) {
@@ -83,8 +50,6 @@ JamGeometry jam_geometry_from_channel(const ChannelGeometry& channel,
                                       const std::string& source) {
   JamGeometry g;
   g.group_names = group_names;
-  g.y_lower = 0.0;
-  g.y_upper = channel.width;
   const int right_bank = 0, left_bank = 1;
   for (const char* bank : {"bank_right", "bank_left"})
     g.solids.push_back({require_group(group_names, bank, source), bank, SolidKind::bank, -1});
@@ -94,20 +59,8 @@ JamGeometry jam_geometry_from_channel(const ChannelGeometry& channel,
     pier_solid[p] = static_cast<int>(g.solids.size());
     g.solids.push_back({require_group(group_names, name, source), name, SolidKind::pier, -1});
   }
-  for (std::vector<int>& line : group_into_lines(channel.piers)) {
-    BridgeLine bridge;
-    bridge.name = fmt::format("bridge_{}", g.bridges.size() + 1);
-    for (const int p : line) {
-      bridge.x += channel.piers[p].centre.x() / static_cast<double>(line.size());
-      bridge.max_radius = std::max(bridge.max_radius, channel.piers[p].radius);
-    }
-    bridge.gaps = line_gaps(channel.piers, line, g, right_bank, left_bank, pier_solid);
-    for (const int p : line) {
-      bridge.piers.push_back(pier_solid[p]);
-      g.solids[pier_solid[p]].bridge = static_cast<int>(g.bridges.size());
-    }
-    g.bridges.push_back(std::move(bridge));
-  }
+  g.bridges = channel_bridges(channel, pier_solid, right_bank, left_bank);
+  mark_piers(g);
   return g;
 }
 
@@ -115,21 +68,35 @@ JamGeometry jam_geometry_from_channel(const ChannelGeometry& channel, const Mesh
   return jam_geometry_from_channel(channel, mesh.group_names, mesh.source);
 }
 
-JamGeometry jam_geometry_from_groups(const Mesh& mesh, const std::vector<int>& solid_groups) {
+JamGeometry jam_geometry_from_groups(const Mesh& mesh, const std::vector<int>& solid_groups,
+                                     const std::vector<BridgeConfig>& bridges) {
   JamGeometry g;
   g.group_names = mesh.group_names;
+  std::vector<int> solid_of_group(mesh.group_names.size(), -1);
   for (const int group : solid_groups) {
     const std::string& name = mesh.group_names.at(static_cast<std::size_t>(group));
+    solid_of_group.at(static_cast<std::size_t>(group)) = static_cast<int>(g.solids.size());
     g.solids.push_back({group, name, kind_from_name(name), -1});
+  }
+  g.bridges = bridges_on_mesh(bridges, mesh, solid_of_group);
+  mark_piers(g);
+  for (std::size_t b = 0; b < g.bridges.size(); ++b) {
+    Bridge& bridge = g.bridges[b];
+    if (!bridge.deck) continue;
+    bridge.deck_group = static_cast<int>(g.group_names.size());
+    g.group_names.push_back(bridge.name + "_deck");
+    g.solids.push_back(
+        {bridge.deck_group, g.group_names.back(), SolidKind::deck, static_cast<int>(b)});
   }
   return g;
 }
 
 JamGeometry jam_geometry_for(const MeshSource& source, const Mesh& mesh,
-                             const std::vector<int>& solid_groups) {
+                             const std::vector<int>& solid_groups,
+                             const std::vector<BridgeConfig>& bridges) {
   if (source.kind == MeshSource::Kind::channel)
     return jam_geometry_from_channel(source.channel, mesh);
-  return jam_geometry_from_groups(mesh, solid_groups);
+  return jam_geometry_from_groups(mesh, solid_groups, bridges);
 }
 
 // ---- statistics -----------------------------------------------------------------------------
@@ -194,69 +161,81 @@ std::vector<int> cluster_roots(const BodySet& bodies, const ContactReport& repor
   return parent;
 }
 
-/// The bridge a jam sits at: the one of its anchoring piers (the nearest to the jam's mean x
-/// when they belong to several); without a pier anchor, the bridge whose pier band
-/// [x - r_max, x + r_max] meets the jam's footprint x-extent (nearest when several); else -1.
+/// The bridge a jam sits at: the one of its anchoring piers (the nearest to the jam's mean
+/// position when they belong to several); without a pier anchor, the bridge whose band
+/// d(axis) +- reach meets the jam's footprint extent along d and whose axis the jam's extent
+/// along s meets (nearest when several); else -1. Distances along each bridge's own d.
 int bridge_of(const Jam& jam, const BodySet& bodies, const JamGeometry& geometry,
               const std::vector<int>& solid_of_group) {
-  constexpr double infinity = std::numeric_limits<double>::infinity();
-  double mean_x = 0.0, lo = infinity, hi = -infinity;  // [m]
-  for (const int i : jam.bodies) {
-    mean_x += bodies.position[i].x() / static_cast<double>(jam.bodies.size());
-    const double h = footprint_half_extent(bodies, i).x();
-    lo = std::min(lo, bodies.position[i].x() - h);
-    hi = std::max(hi, bodies.position[i].x() + h);
-  }
+  Vec2 mean = Vec2::Zero();  // [m]
+  for (const int i : jam.bodies)
+    mean += bodies.position[i] / static_cast<double>(jam.bodies.size());
   std::vector<int> candidates;
   for (const int group : jam.anchors) {
     const int s = group < static_cast<int>(solid_of_group.size()) ? solid_of_group[group] : -1;
     if (s >= 0 && geometry.solids[s].bridge >= 0) candidates.push_back(geometry.solids[s].bridge);
   }
   if (candidates.empty()) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
     for (int b = 0; b < static_cast<int>(geometry.bridges.size()); ++b) {
-      const BridgeLine& line = geometry.bridges[b];
-      if (lo <= line.x + line.max_radius && hi >= line.x - line.max_radius) candidates.push_back(b);
+      const Bridge& bridge = geometry.bridges[b];
+      double d_lo = infinity, d_hi = -infinity, s_lo = infinity, s_hi = -infinity;  // [m]
+      for (const int i : jam.bodies) {
+        const double d = bridge.downstream_of(bodies.position[i]);
+        const double hd = footprint_half_extent_along(bodies, i, bridge.downstream);
+        const double s = bridge.along_of(bodies.position[i]);
+        const double hs = footprint_half_extent_along(bodies, i, bridge.along);
+        d_lo = std::min(d_lo, d - hd), d_hi = std::max(d_hi, d + hd);
+        s_lo = std::min(s_lo, s - hs), s_hi = std::max(s_hi, s + hs);
+      }
+      const double axis = bridge.axis_downstream();
+      if (d_lo <= axis + bridge.reach && d_hi >= axis - bridge.reach && s_hi >= 0.0 &&
+          s_lo <= bridge.length())
+        candidates.push_back(b);
     }
   }
   int best = -1;
+  double best_distance = 0.0;  // [m]
   for (const int b : candidates) {
-    if (best < 0 ||
-        std::abs(geometry.bridges[b].x - mean_x) < std::abs(geometry.bridges[best].x - mean_x))
-      best = b;
+    const Bridge& bridge = geometry.bridges[b];
+    const double distance = std::abs(bridge.axis_downstream() - bridge.downstream_of(mean));
+    if (best < 0 || distance < best_distance) best = b, best_distance = distance;
   }
   return best;
 }
 
-/// The y-intervals of the footprints of `members` [m].
-std::vector<std::pair<double, double>> y_spans(const BodySet& bodies,
-                                               const std::vector<int>& members) {
+/// The intervals along a bridge's axis of the footprints of `members` [m].
+std::vector<std::pair<double, double>> axis_spans(const BodySet& bodies,
+                                                  const std::vector<int>& members,
+                                                  const Bridge& bridge) {
   std::vector<std::pair<double, double>> spans;
   for (const int i : members) {
-    const double h = footprint_half_extent(bodies, i).y();
-    spans.emplace_back(bodies.position[i].y() - h, bodies.position[i].y() + h);
+    const double s = bridge.along_of(bodies.position[i]);
+    const double h = footprint_half_extent_along(bodies, i, bridge.along);
+    spans.emplace_back(s - h, s + h);
   }
   return spans;
 }
 
 /// Fills each jam's bridge and gap blockage, and each bridge's total blockage: the union of the
-/// y-spans of the footprints of its jams' bodies, clipped to each gap, summed over the gaps and
-/// divided by the sum of the gap widths.
+/// spans along the axis of the footprints of its jams' bodies, clipped to each gap, summed over the
+/// gaps and divided by the sum of the gap widths.
 void measure_blockage(JamStatistics& stats, const BodySet& bodies, const JamGeometry& geometry,
                       const std::vector<int>& solid_of_group) {
   std::vector<std::vector<std::pair<double, double>>> bridge_spans(geometry.bridges.size());
   for (Jam& jam : stats.jams) {
     jam.bridge = bridge_of(jam, bodies, geometry, solid_of_group);
     if (jam.bridge < 0) continue;
-    const auto spans = y_spans(bodies, jam.bodies);
+    const auto spans = axis_spans(bodies, jam.bodies, geometry.bridges[jam.bridge]);
     for (const Gap& gap : geometry.bridges[jam.bridge].gaps)
-      jam.gap_blockage.push_back(covered_length(spans, gap.y_lower, gap.y_upper) / gap.width());
+      jam.gap_blockage.push_back(covered_length(spans, gap.lower, gap.upper) / gap.width());
     auto& all = bridge_spans[jam.bridge];
     all.insert(all.end(), spans.begin(), spans.end());
   }
   for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
     double covered = 0.0, total = 0.0;  // [m]
     for (const Gap& gap : geometry.bridges[b].gaps) {
-      covered += covered_length(bridge_spans[b], gap.y_lower, gap.y_upper);
+      covered += covered_length(bridge_spans[b], gap.lower, gap.upper);
       total += gap.width();
     }
     stats.bridge_blockage.push_back(total > 0.0 ? covered / total : 0.0);
@@ -271,7 +250,7 @@ void count_fates(JamStatistics& stats, const BodySet& bodies, const JamGeometry&
   for (int i = 0; i < bodies.size(); ++i) {
     const bool gone = bodies.state[i] == BodyState::gone;
     const bool beyond =
-        geometry.bridges.empty() ? gone : bodies.position[i].x() > geometry.passed_x();
+        geometry.bridges.empty() ? gone : geometry.passed_every_bridge(bodies.position[i]);
     stats.passed += !in_jam[i] && beyond;
     if (gone) continue;
     if (in_jam[i])
@@ -349,10 +328,9 @@ std::vector<std::string> JamStatisticsWriter::columns(const JamGeometry& geometr
                                                       bool with_backwater) {
   std::vector<std::string> names = {"time [s]",  "released", "passed", "left",       "trapped",
                                     "deposited", "floating", "jams",   "largest jam"};
-  for (const BridgeLine& b : geometry.bridges) names.push_back("blockage " + b.name + " [-]");
+  for (const Bridge& b : geometry.bridges) names.push_back("blockage " + b.name + " [-]");
   if (with_backwater)
-    for (const BridgeLine& b : geometry.bridges)
-      names.push_back("backwater rise " + b.name + " [m]");
+    for (const Bridge& b : geometry.bridges) names.push_back("backwater rise " + b.name + " [m]");
   for (const SolidGroup& s : geometry.solids) names.push_back("touching " + s.name);
   for (const SolidGroup& s : geometry.solids) names.push_back("anchored " + s.name);
   return names;
@@ -402,38 +380,45 @@ void append_line(fmt::memory_buffer& out, fmt::format_string<Args...> format, Ar
 std::string format_jam_summary(const JamStatistics& s, const JamGeometry& geometry,
                                std::span<const double> backwater_rise) {
   fmt::memory_buffer out;
+  // Name columns as wide as the longest name (at least the paper's channel's widths).
+  std::size_t bridge_width = 10, group_width = 12;
+  for (const Bridge& b : geometry.bridges) bridge_width = std::max(bridge_width, b.name.size());
+  for (const SolidGroup& g : geometry.solids) group_width = std::max(group_width, g.name.size());
   append_line(out, "bodies: {} released, {} passed, {} left, {} trapped, {} deposited, {} floating",
               s.released, s.passed, s.left, s.trapped, s.deposited, s.floating);
   if (!geometry.bridges.empty()) {
-    append_line(out, "  {:<10} {:>8} {:>5} {:>9}{}", "bridge", "x [m]", "gaps", "blockage",
+    append_line(out, "  {:<{}} {:>24} {:>5} {:>9}{}", "bridge", bridge_width,
+                "axis centre (x, y) [m]", "gaps", "blockage",
                 backwater_rise.empty() ? "" : "  backwater rise [m]");
     for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
-      const BridgeLine& bridge = geometry.bridges[b];
+      const Bridge& bridge = geometry.bridges[b];
+      const Vec2 centre = 0.5 * (bridge.start + bridge.end);
       const std::string rise =
           b < backwater_rise.size() ? fmt::format("  {:>18.4f}", backwater_rise[b]) : "";
-      append_line(out, "  {:<10} {:>8.1f} {:>5} {:>9.3f}{}", bridge.name, bridge.x,
-                  bridge.gaps.size(), s.bridge_blockage.at(b), rise);
+      append_line(out, "  {:<{}} {:>24} {:>5} {:>9.3f}{}", bridge.name, bridge_width,
+                  fmt::format("({:.1f}, {:.1f})", centre.x(), centre.y()), bridge.gaps.size(),
+                  s.bridge_blockage.at(b), rise);
     }
   }
   append_line(out, "  {} jam{}, largest {} bodies", s.jams.size(), s.jams.size() == 1 ? "" : "s",
               s.largest_jam());
   if (!s.jams.empty()) {
-    append_line(out, "  {:<4} {:>6}  {:<24} {:<10} {}", "jam", "bodies", "anchored on", "bridge",
-                "gap blockage");
+    append_line(out, "  {:<4} {:>6}  {:<24} {:<{}} {}", "jam", "bodies", "anchored on", "bridge",
+                bridge_width, "gap blockage");
     for (std::size_t j = 0; j < s.jams.size(); ++j) {
       const Jam& jam = s.jams[j];
       std::vector<std::string> anchors;
       for (const int g : jam.anchors) anchors.push_back(geometry.group_names.at(g));
-      append_line(out, "  {:<4} {:>6}  {:<24} {:<10} {}", j + 1, jam.body_count(),
+      append_line(out, "  {:<4} {:>6}  {:<24} {:<{}} {}", j + 1, jam.body_count(),
                   fmt::format("{}", fmt::join(anchors, ", ")),
                   jam.bridge >= 0 ? geometry.bridges[jam.bridge].name : std::string("-"),
-                  fmt::format("{:.3f}", fmt::join(jam.gap_blockage, " ")));
+                  bridge_width, fmt::format("{:.3f}", fmt::join(jam.gap_blockage, " ")));
     }
   }
   if (!geometry.solids.empty()) {
-    append_line(out, "  {:<12} {:>8} {:>8}", "group", "touching", "anchored");
+    append_line(out, "  {:<{}} {:>8} {:>8}", "group", group_width, "touching", "anchored");
     for (std::size_t k = 0; k < geometry.solids.size(); ++k)
-      append_line(out, "  {:<12} {:>8} {:>8}", geometry.solids[k].name, s.touching[k],
+      append_line(out, "  {:<{}} {:>8} {:>8}", geometry.solids[k].name, group_width, s.touching[k],
                   s.anchored[k]);
   }
   return fmt::to_string(out);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "bodies/outflow.hpp"
+#include "bridges/deck_contact.hpp"
 #include "core/error.hpp"
 #include "coupling/flow_engines.hpp"
 #include "coupling/placement_overlap.hpp"
@@ -66,7 +67,10 @@ void Simulation::initialize() {
                                                case_.bodies.physics.added_mass_coefficient);
     const std::vector<int> solids = solid_group_indices(mesh_, case_.flow.boundaries);
     walls_ = extract_boundary_segments(mesh_, solids);
-    jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids);
+    jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids, case_.bridges);
+    add_deck_faces(walls_, jam_geometry_.bridges, jam_geometry_.group_names);
+    has_decks_ = !walls_.band_lower.empty();
+    check_decks_stand_above_the_bed();
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
         !jam_geometry_.bridges.empty()) {
       reference_flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
@@ -161,6 +165,10 @@ void Simulation::advance_bodies(double t0, double t1) {
   // The bodies' stage encloses the contacts' (printed as "bodies ... of which contacts ...").
   auto timed_bodies = timer_.time(Stage::bodies);
   releaser_->release(bodies_, flow_->field(), t0, t1);
+  if (has_decks_) {  // who passes under a deck, who stops, who floats over (deck_contact.hpp)
+    BodyLevels levels = body_levels(bodies_, flow_->field(), t0);
+    contacts_->set_body_levels(std::move(levels.bottom), std::move(levels.top));
+  }
   // RKF45 sub-steps of every body; the bodies that may touch, in contact groups, with their
   // contacts resolved at the end of each of their contact intervals (body_integrator.hpp). The
   // contact solve moves bodies over the interval just integrated (ContactWorld::step).
@@ -187,6 +195,19 @@ void Simulation::advance_bodies(double t0, double t1) {
         "t = {:.3f} s: body {} is outside the domain at ({:.3f}, {:.3f}) m, through a wall; "
         "contacts should have stopped it (a smaller time.step may help)",
         t1, bodies_.id[i], bodies_.position[i].x(), bodies_.position[i].y());
+  }
+}
+
+void Simulation::check_decks_stand_above_the_bed() const {
+  for (std::size_t b = 0; b < jam_geometry_.bridges.size(); ++b) {
+    const Bridge& bridge = jam_geometry_.bridges[b];
+    if (!bridge.deck) continue;
+    const double bed = water_on_axis(bridge, flow_->field(), time_).lowest_bed;  // [m]
+    if (bridge.deck->top <= bed)
+      throw_input_error(
+          "{}: bridge '{}': its deck's top ({} m) is below the bed everywhere along its axis "
+          "(the lowest bed there is {} m); give the deck's elevations in the terrain's datum",
+          case_.bridges.at(b).origin, bridge.name, bridge.deck->top, bed);
   }
 }
 

@@ -93,6 +93,7 @@ class Simulation {
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void apply_reaction();
+  void check_decks_stand_above_the_bed() const;  // InputError for a deck under the ground
   void check_diagnostics();
   void write_output_if_due(bool force);
   void open_probes(std::optional<CsvResume> resume);
@@ -130,6 +131,7 @@ class Simulation {
   BoundarySegments walls_;
   std::vector<int> outflow_groups_;
   JamGeometry jam_geometry_;
+  bool has_decks_ = false;  // some bridge has a deck: the contacts need the bodies' levels
   std::unique_ptr<BackwaterProbe> backwater_probe_;
   std::unique_ptr<RunOutput> output_;
   std::unique_ptr<ProbeWriter> probes_;  // output.probes, when the case has any

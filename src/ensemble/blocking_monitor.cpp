@@ -12,26 +12,28 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<double> gap_cover(const JamStatistics& statistics, const BodySet& bodies,
                               const JamGeometry& geometry, int bridge) {
-  // The y-intervals [y_G - h_y, y_G + h_y] of every body of every jam at the bridge, their union
-  // clipped to each gap (covered_length), over the gap's width.
+  // The intervals [s_G - h_s, s_G + h_s] along the axis of every body of every jam at the
+  // bridge, their union clipped to each gap (covered_length), over the gap's width.
+  const Bridge& b = geometry.bridges[bridge];
   std::vector<std::pair<double, double>> spans;
   for (const Jam& jam : statistics.jams) {
     if (jam.bridge != bridge) continue;
     for (int i : jam.bodies) {
-      const double y = bodies.position[i].y(), h = footprint_half_extent(bodies, i).y();
-      spans.emplace_back(y - h, y + h);
+      const double s = b.along_of(bodies.position[i]);
+      const double h = footprint_half_extent_along(bodies, i, b.along);
+      spans.emplace_back(s - h, s + h);
     }
   }
   std::vector<double> cover;
-  for (const Gap& gap : geometry.bridges[bridge].gaps)
-    cover.push_back(covered_length(spans, gap.y_lower, gap.y_upper) / gap.width());
+  for (const Gap& gap : b.gaps)
+    cover.push_back(covered_length(spans, gap.lower, gap.upper) / gap.width());
   return cover;
 }
 
 BlockingMonitor::BlockingMonitor(const JamGeometry& geometry, const BlockingCriterion& criterion)
     : geometry_(&geometry), criterion_(criterion) {
   bridges_.resize(geometry.bridges.size());
-  for (const BridgeLine& line : geometry.bridges) {
+  for (const Bridge& line : geometry.bridges) {
     gaps_.emplace_back(line.gaps.size());
     streak_start_.emplace_back(line.gaps.size(), nan);
   }
@@ -92,7 +94,6 @@ void BlockingMonitor::finish(const JamStatistics& statistics, const BodySet& bod
   std::vector<std::uint8_t> jammed(static_cast<std::size_t>(bodies.size()), 0);
   for (const Jam& jam : statistics.jams)
     for (int i : jam.bodies) jammed[i] = 1;
-  const double passed_x = geometry_->passed_x();
   result.bodies.clear();
   for (int i = 0; i < bodies.size(); ++i) {
     BodyOutcome body;
@@ -105,8 +106,9 @@ void BlockingMonitor::finish(const JamStatistics& statistics, const BodySet& bod
       body.fate = BodyFate::trapped;
     else if (bodies.state[i] == BodyState::grounded)
       body.fate = BodyFate::stranded;
-    body.passed = !jammed[i] && (std::isinf(passed_x) ? bodies.state[i] == BodyState::gone
-                                                      : body.end.x() > passed_x);
+    body.passed =
+        !jammed[i] && (geometry_->bridges.empty() ? bodies.state[i] == BodyState::gone
+                                                  : geometry_->passed_every_bridge(body.end));
     result.bodies.push_back(body);
   }
 }

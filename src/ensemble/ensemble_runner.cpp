@@ -161,7 +161,8 @@ Plan make_plan(const EnsembleOptions& options) {
   plan.mesh = generate_mesh(plan.base.mesh);
   check_case_against_mesh(plan.base, plan.mesh.group_names);
   plan.geometry = jam_geometry_for(plan.base.mesh, plan.mesh,
-                                   solid_group_indices(plan.mesh, plan.base.flow.boundaries));
+                                   solid_group_indices(plan.mesh, plan.base.flow.boundaries),
+                                   plan.base.bridges);
   const fs::path directory = options.output.empty()
                                  ? fs::path(plan.base.output.directory) / plan.base.name
                                  : fs::path(options.output);

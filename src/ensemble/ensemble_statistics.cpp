@@ -78,7 +78,7 @@ EnsembleStatistics compute_ensemble_statistics(const std::vector<MemberResult>& 
     sweep.value = config.has_sweep ? config.sweep_values[s] : 0.0;
     std::vector<int> bridge_blocked(geometry.bridges.size(), 0);
     std::vector<std::vector<int>> gap_blocked;
-    for (const BridgeLine& line : geometry.bridges) gap_blocked.emplace_back(line.gaps.size(), 0);
+    for (const Bridge& line : geometry.bridges) gap_blocked.emplace_back(line.gaps.size(), 0);
     std::vector<double> jam_size, rise, travel;
     int any_trapped = 0, several = 0;  // members with >= 1, >= several_trapped bodies trapped
     for (const MemberResult& r : results) {
@@ -215,7 +215,7 @@ void write_ensemble_tables(const std::string& directory, const std::vector<Membe
     columns.push_back(fmt::format("{} [{}]", input_key(input), input_unit(input)));
   for (const char* c : {"failed", "released", "passed", "left", "trapped", "stranded", "floating"})
     columns.emplace_back(c);
-  for (const BridgeLine& line : geometry.bridges) {
+  for (const Bridge& line : geometry.bridges) {
     for (const char* c : {"blocked {}", "blocking time {} [s]", "blocking bodies {}",
                           "largest jam {}", "max blockage {} [-]", "max backwater rise {} [m]"})
       columns.push_back(fmt::format(fmt::runtime(c), line.name));

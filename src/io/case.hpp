@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bodies/body_set.hpp"
+#include "bridges/bridge_config.hpp"
 #include "core/expression.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
@@ -274,6 +275,7 @@ struct Case {
   std::string file;  // the case file, for messages ("" when built in code)
   std::string name;  // defaults to the file's stem
   MeshSource mesh;
+  std::vector<BridgeConfig> bridges;  // bridges: (a mesh.channel makes its own from its piers)
   BedConfig bed;
   FlowConfig flow;
   TimeConfig time;

@@ -342,8 +342,16 @@ Case parse_case(const std::string& text, const std::string& file_name) {
     geodata.push_back({c.bed.raster->grid().crs_wkt,
                        fmt::format("the terrain raster '{}'", c.bed.raster->path())});
   geodata.push_back({region_crs, "mesh.region's outline"});
+  if (const auto bridges = root.find("bridges"))
+    c.bridges = read_bridges(*bridges, case_folder, c.mesh, geodata);
   c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map(),
                      case_folder, geodata);
+  for (const BridgeConfig& bridge : c.bridges)
+    if (bridge.deck && c.flow.engine != FlowEngineKind::fv)
+      throw_input_error(
+          "{}: bridge '{}' has a deck: the water under and over a deck is computed by the "
+          "finite-volume engine only; set flow.engine: fv",
+          bridge.origin, bridge.name);
   c.time = read_time(root.get("time", "at least time.end").map());
   c.bodies = read_bodies(root.map("bodies"));
   const bool has_bodies = !c.bodies.bodies.empty() || !c.bodies.releases.empty();

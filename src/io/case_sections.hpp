@@ -41,6 +41,13 @@ void read_friction(const YamlMap& friction, const std::filesystem::path& case_fo
 RegionGeometry read_region(const YamlMap& region, const std::filesystem::path& case_folder,
                            std::string& crs_wkt);
 
+/// bridges: a list of {name, axis, piers, backwater_distance}, or a line layer {file, layer,
+/// name_field, backwater_distance} (its coordinate system added to `geodata`). Refused with a
+/// mesh.channel, which makes its bridges from its piers.
+std::vector<BridgeConfig> read_bridges(const YamlValue& value,
+                                       const std::filesystem::path& case_folder,
+                                       const MeshSource& mesh, std::vector<GeodataCrs>& geodata);
+
 /// bodies: physics (spec 3), contact (spec 4.3), the explicit list (spec 2), releases (spec 5).
 BodiesConfig read_bodies(const YamlMap& bodies);
 

@@ -104,3 +104,24 @@ TEST(BoundarySegments, GridQueryFindsExactlyTheSegmentsMeetingItsCells) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+TEST(BoundarySegments, ABandedSegmentStopsOnlyBodiesAcrossItsBandOnItsWaterSide) {
+  BoundarySegments walls;
+  walls.add_segment(Vec2(0, 0), Vec2(10, 0), 0);  // a plain wall: the water above it (y > 0)
+  walls.add_banded_segment(Vec2(5, -5), Vec2(5, 5), 1, 2.0, 3.0);  // a deck's face, water at x < 5
+  walls.add_segment(Vec2(10, 0), Vec2(10, 10), 2);                 // added after: plain again
+  ASSERT_EQ(walls.band_lower.size(), 3u);
+  EXPECT_TRUE(walls.stops(0, Vec2(1, 1), 5.0, 6.0));  // a plain wall stops anything
+  EXPECT_TRUE(walls.stops(2, Vec2(1, 1), -1.0, 0.0));
+  EXPECT_TRUE(walls.stops(1, Vec2(4, 0), 1.5, 2.5));   // top above the soffit 2
+  EXPECT_TRUE(walls.stops(1, Vec2(4, 0), 2.5, 2.7));   // within the band
+  EXPECT_FALSE(walls.stops(1, Vec2(4, 0), 1.0, 2.0));  // top at the soffit: passes under
+  EXPECT_FALSE(walls.stops(1, Vec2(4, 0), 3.0, 3.5));  // underside at the top: floats over
+  EXPECT_FALSE(walls.stops(1, Vec2(6, 0), 1.5, 2.5));  // beyond the face: not from its side
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -91,15 +91,17 @@ TEST(MeanEtaAlong, ThroughTheFlowFieldInterface) {
   EXPECT_NEAR(mean_eta_along(flow, 0.5, Vec2(0, 5), Vec2(20, 5), 4), 2.0 + 0.5 + 1.5, tolerance);
 }
 
+/// A bridge across the 20 m wide channel at x whose piers reach 5 m, the section two diameters
+/// upstream (as channel_bridges makes it).
 JamGeometry one_bridge_at(double x) {
   JamGeometry g;
-  g.y_lower = 0.0;
-  g.y_upper = 20.0;
-  BridgeLine line;
-  line.name = "bridge_1";
-  line.x = x;
-  line.max_radius = 5.0;
-  g.bridges.push_back(line);
+  Bridge bridge;
+  bridge.name = "bridge_1";
+  bridge.start = Vec2(x, 0.0);
+  bridge.end = Vec2(x, 20.0);
+  bridge.reach = 5.0;
+  bridge.backwater_distance = 20.0;
+  g.bridges.push_back(bridge);
   return g;
 }
 
@@ -133,9 +135,9 @@ TEST(BackwaterProbe, ASectionOutsideTheMeshIsAnInputErrorNamingTheBridge) {
     const BackwaterProbe probe(mesh, one_bridge_at(10.0));
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("the backwater section of bridge_1 (x = -10 m, 2 diameters "
-                                    "of 10 m upstream of its piers, y from 0 to 20 m) lies "
-                                    "outside the mesh"));
+    EXPECT_THAT(e.what(), HasSubstr("the backwater section of bridge 'bridge_1', 20 m upstream "
+                                    "of its axis, from (-10, 0) to (-10, 20) m, lies outside "
+                                    "the mesh"));
   }
 }
 

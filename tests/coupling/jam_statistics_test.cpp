@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -74,28 +75,32 @@ TEST(JamGeometry, PaperChannelHasTwoBridgesWithGapsAtTheBanksAndBetweenThePiers)
   EXPECT_EQ(g.solids[5].group, pier_4);
   ASSERT_EQ(g.bridges.size(), 2u);
   for (int b = 0; b < 2; ++b) {
-    const BridgeLine& line = g.bridges[b];
+    const Bridge& line = g.bridges[b];
     EXPECT_EQ(line.name, b == 0 ? "bridge_1" : "bridge_2");
-    EXPECT_EQ(line.x, b == 0 ? 600.0 : 900.0);
-    EXPECT_EQ(line.max_radius, 30.0);
+    EXPECT_EQ(line.start, Vec2(b == 0 ? 600.0 : 900.0, 0.0));
+    EXPECT_EQ(line.end, Vec2(b == 0 ? 600.0 : 900.0, 170.0));
+    EXPECT_EQ(line.reach, 30.0);
+    EXPECT_EQ(line.backwater_distance, 120.0);  // two diameters
     EXPECT_THAT(line.piers, ElementsAre(2 + 2 * b, 3 + 2 * b));
     EXPECT_EQ(g.solids[2 + 2 * b].bridge, b);
     ASSERT_EQ(line.gaps.size(), 3u);
     // 42.5 - 30 = 12.5, 42.5 + 30 = 72.5, 127.5 - 30 = 97.5, 127.5 + 30 = 157.5: all exact.
-    EXPECT_EQ(line.gaps[0].y_lower, 0.0);
-    EXPECT_EQ(line.gaps[0].y_upper, 12.5);
-    EXPECT_EQ(line.gaps[1].y_lower, 72.5);
-    EXPECT_EQ(line.gaps[1].y_upper, 97.5);
-    EXPECT_EQ(line.gaps[2].y_lower, 157.5);
-    EXPECT_EQ(line.gaps[2].y_upper, 170.0);
+    EXPECT_EQ(line.gaps[0].lower, 0.0);
+    EXPECT_EQ(line.gaps[0].upper, 12.5);
+    EXPECT_EQ(line.gaps[1].lower, 72.5);
+    EXPECT_EQ(line.gaps[1].upper, 97.5);
+    EXPECT_EQ(line.gaps[2].lower, 157.5);
+    EXPECT_EQ(line.gaps[2].upper, 170.0);
     EXPECT_EQ(line.gaps[0].lower_solid, 0);  // bank_right
     EXPECT_EQ(line.gaps[0].upper_solid, 2 + 2 * b);
     EXPECT_EQ(line.gaps[1].lower_solid, 2 + 2 * b);
     EXPECT_EQ(line.gaps[1].upper_solid, 3 + 2 * b);
     EXPECT_EQ(line.gaps[2].upper_solid, 1);  // bank_left
   }
-  EXPECT_EQ(g.passed_x(), 930.0);
-  EXPECT_EQ(g.y_upper, 170.0);
+  // Beyond both bridges: x > 900 + 30, anywhere across.
+  EXPECT_FALSE(g.passed_every_bridge(Vec2(930.0, 85.0)));
+  EXPECT_TRUE(g.passed_every_bridge(Vec2(std::nextafter(930.0, 1e9), 85.0)));
+  EXPECT_FALSE(g.passed_every_bridge(Vec2(700.0, 85.0)));
 }
 
 TEST(JamGeometry, PiersGivenInAnyOrderGroupIntoLinesByXAndSortByY) {
@@ -106,13 +111,13 @@ TEST(JamGeometry, PiersGivenInAnyOrderGroupIntoLinesByXAndSortByY) {
       {{900.0, 127.5}, 30.0}, {{600.0, 42.5}, 30.0}, {{610.0, 127.5}, 30.0}, {{900.0, 42.5}, 20.0}};
   const JamGeometry g = jam_geometry_from_channel(c, channel_groups, "test mesh");
   ASSERT_EQ(g.bridges.size(), 2u);
-  EXPECT_DOUBLE_EQ(g.bridges[0].x, 605.0);
+  EXPECT_DOUBLE_EQ(g.bridges[0].start.x(), 605.0);
   EXPECT_THAT(g.bridges[0].piers, ElementsAre(3, 4));  // solids of pier_2, pier_3
-  EXPECT_EQ(g.bridges[1].x, 900.0);
-  EXPECT_EQ(g.bridges[1].max_radius, 30.0);
+  EXPECT_EQ(g.bridges[1].start.x(), 900.0);
+  EXPECT_EQ(g.bridges[1].reach, 30.0);
   EXPECT_THAT(g.bridges[1].piers, ElementsAre(5, 2));  // pier_4 (y 42.5), pier_1 (y 127.5)
-  EXPECT_EQ(g.bridges[1].gaps[0].y_upper, 22.5);       // 42.5 - 20
-  EXPECT_EQ(g.bridges[1].gaps[1].y_lower, 62.5);       // 42.5 + 20
+  EXPECT_EQ(g.bridges[1].gaps[0].upper, 22.5);         // 42.5 - 20
+  EXPECT_EQ(g.bridges[1].gaps[1].lower, 62.5);         // 42.5 + 20
 }
 
 TEST(JamGeometry, PiersAPierRadiusApartInXStandInTwoLines) {
@@ -123,7 +128,7 @@ TEST(JamGeometry, PiersAPierRadiusApartInXStandInTwoLines) {
   ASSERT_EQ(g.bridges.size(), 2u);
   // A line with one pier has a gap on each side of it.
   EXPECT_EQ(g.bridges[0].gaps.size(), 2u);
-  EXPECT_EQ(g.bridges[1].gaps[0].y_upper, 97.5);
+  EXPECT_EQ(g.bridges[1].gaps[0].upper, 97.5);
 }
 
 TEST(JamGeometry, MissingPierGroupIsAnInputErrorNamingTheMeshAndTheGroup) {
@@ -380,9 +385,11 @@ TEST(JamSummary, AlignedTableOfBridgesJamsAndGroups) {
   const std::string text = format_jam_summary(s, g, rise);
   EXPECT_THAT(text, HasSubstr("bodies: 3 released, 0 passed, 0 left, 3 trapped, 0 deposited, "
                               "0 floating\n"));
-  EXPECT_THAT(text, HasSubstr("  bridge        x [m]  gaps  blockage  backwater rise [m]\n"
-                              "  bridge_1      600.0     3     0.200              0.0125\n"
-                              "  bridge_2      900.0     3     0.000              0.0000\n"));
+  EXPECT_THAT(
+      text,
+      HasSubstr("  bridge       axis centre (x, y) [m]  gaps  blockage  backwater rise [m]\n"
+                "  bridge_1              (600.0, 85.0)     3     0.200              0.0125\n"
+                "  bridge_2              (900.0, 85.0)     3     0.000              0.0000\n"));
   EXPECT_THAT(text, HasSubstr("  1 jam, largest 3 bodies\n"));
   EXPECT_THAT(text, HasSubstr("  1         3  pier_1                   bridge_1   "
                               "0.000 0.400 0.000\n"));

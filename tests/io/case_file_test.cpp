@@ -790,7 +790,7 @@ TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
       "wind, rain, min_depth, dry_depth, initial, boundaries");
   EXPECT_EQ(error_of(appended("nmae: river\n")),
             "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
-            "bed, flow, time, bodies, output, crs");
+            "bed, bridges, flow, time, bodies, output, crs");
   EXPECT_EQ(error_of(appended("bodies:\n  list:\n    - {x: 1, y: 2, angel_deg: 30}\n")),
             "case.yaml:14: bodies.list[0].angel_deg: unknown key (did you mean 'angle_deg'?); "
             "allowed here: shape, length, width, height, density, x, y, angle_deg, u, v, omega, "
@@ -1032,6 +1032,117 @@ TEST(CaseFile, SleepingIslandsAreOnByDefaultWithTheSoftStepOnly) {
       contact("{solver: sequential_impulses, sleep_time: 2, sleep_speed: 0.01}");
   EXPECT_EQ(set.sleep_time, 2.0);
   EXPECT_EQ(set.sleep_speed, 0.01);
+}
+
+}  // namespace
+}  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// ---- bridges -------------------------------------------------------------------------------
+
+// base_case on a polygon (mesh.channel makes its own bridges) with the finite-volume engine
+// (decks need it), `bridges` appended from line 14.
+std::string with_bridges(const std::string& bridges, const std::string& engine = "fv") {
+  const std::string polygon =
+      test::replaced(base_case, "  channel: {length: 100, width: 20}",
+                     "  polygon: {points: [[0, 0], [100, 0], [100, 20], [0, 20]],\n"
+                     "            groups: [bank_right, outflow, bank_left, inflow]}");
+  return test::replaced(polygon, "flow:\n", "flow:\n  engine: " + engine + "\n") + bridges;
+}
+
+TEST(CaseFile, BridgesAreReadWithTheirAxisPiersAndDeck) {
+  const Case c = parse_case(with_bridges("bridges:\n"
+                                         "  - name: road\n"
+                                         "    axis: [[50, -2], [50, 22]]\n"
+                                         "    piers: [pier_1]\n"
+                                         "    deck: {soffit: 2.5, top: 3.4, width: 8,\n"
+                                         "           railing: {height: 1.1, open: false}}\n"
+                                         "    backwater_distance: 30\n"
+                                         "  - axis: [[80, -2], [80, 22]]\n"),
+                            "case.yaml");
+  ASSERT_EQ(c.bridges.size(), 2u);
+  const BridgeConfig& road = c.bridges[0];
+  EXPECT_EQ(road.name, "road");
+  EXPECT_EQ(road.start, Vec2(50, -2));
+  EXPECT_EQ(road.end, Vec2(50, 22));
+  EXPECT_EQ(road.pier_groups, std::vector<std::string>{"pier_1"});
+  ASSERT_TRUE(road.deck.has_value());
+  EXPECT_EQ(road.deck->soffit, 2.5);
+  EXPECT_EQ(road.deck->top, 3.4);
+  EXPECT_EQ(road.deck->width, 8.0);
+  EXPECT_EQ(road.deck->railing_height, 1.1);
+  EXPECT_FALSE(road.deck->railing_open);
+  EXPECT_EQ(road.deck->obstacle_top(), 3.4 + 1.1);
+  EXPECT_EQ(road.backwater_distance, 30.0);
+  EXPECT_EQ(road.origin, "case.yaml:15: bridges[0]");
+  EXPECT_EQ(c.bridges[1].name, "bridge_2");
+  EXPECT_FALSE(c.bridges[1].deck.has_value());
+  EXPECT_EQ(c.bridges[1].backwater_distance, 0.0);  // the default, set on the mesh
+}
+
+TEST(CaseFileError, BridgeMistakesAreNamed) {
+  EXPECT_EQ(error_of(appended("bridges: [{axis: [[50, -2], [50, 22]]}]\n")),
+            "case.yaml:12: bridges: a mesh.channel makes one bridge of each line of its piers; "
+            "bridges: is for the other meshes (mesh.polygon, mesh.region, mesh.file)");
+  EXPECT_EQ(error_of(with_bridges("bridges: [{axis: [[50, -2], [50, 10], [50, 22]]}]\n")),
+            "case.yaml:14: bridges[0].axis: expected the axis' two ends [[x, y], [x, y]], got 3 "
+            "points");
+  EXPECT_EQ(error_of(with_bridges("bridges: [{axis: [[50, 2], [50, 2]]}]\n")),
+            "case.yaml:14: bridges[0].axis: bridge 'bridge_1': the axis' two ends are the same "
+            "point (50, 2) m");
+  EXPECT_EQ(error_of(with_bridges("bridges: [{name: a, axis: [[50, -2], [50, 22]]},\n"
+                                  "          {name: a, axis: [[60, -2], [60, 22]]}]\n")),
+            "case.yaml:14: bridges: two bridges are called 'a' (case.yaml:14: bridges[0] and "
+            "case.yaml:15: bridges[1]); names must differ");
+  EXPECT_EQ(error_of(with_bridges("bridges: [{axis: [[50, -2], [50, 22]],\n"
+                                  "            deck: {soffit: 3, top: 2.5, width: 8}}]\n")),
+            "case.yaml:15: bridges[0].deck.top: bridge 'bridge_1': the deck top (2.5 m) must "
+            "stand above its soffit (3 m)");
+  EXPECT_THAT(error_of(with_bridges("bridges: [{axis: [[50, -2], [50, 22]],\n"
+                                    "            deck: {soffit: 2, top: 2.5, width: 0}}]\n")),
+              HasSubstr("case.yaml:15: bridges[0].deck.width: expected a number > 0"));
+  EXPECT_EQ(error_of(with_bridges("bridges: [{axis: [[50, -2], [50, 22]],\n"
+                                  "            deck: {soffit: 2, top: 2.5, width: 8}}]\n",
+                                  "fem")),
+            "case.yaml:14: bridges[0]: bridge 'bridge_1' has a deck: the water under and over a "
+            "deck is computed by the finite-volume engine only; set flow.engine: fv");
+  EXPECT_THAT(error_of(with_bridges("bridges: [{axis: [[50, -2], [50, 22]], dekc: {}}]\n")),
+              HasSubstr("dekc"));
+}
+
+}  // namespace
+}  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAndAxes) {
+  const std::filesystem::path dir = test::scratch_path("flotsam_case_bridges_layer");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "bridges.geojson") << R"({"type": "FeatureCollection",
+ "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32633"}},
+ "features": [
+  {"type": "Feature", "properties": {"name": "road"},
+   "geometry": {"type": "LineString", "coordinates": [[50, -2], [50, 22]]}},
+  {"type": "Feature", "properties": {"name": "rail"},
+   "geometry": {"type": "LineString", "coordinates": [[80, -2], [80, 22]]}}]})";
+  const std::string text =
+      test::replaced(base_case, "  channel: {length: 100, width: 20}",
+                     "  polygon: {points: [[0, 0], [100, 0], [100, 20], [0, 20]],\n"
+                     "            groups: [bank_right, outflow, bank_left, inflow]}") +
+      "bridges: {file: bridges.geojson, backwater_distance: 25}\n";
+  const Case c = parse_case(text, (dir / "case.yaml").string());
+  ASSERT_EQ(c.bridges.size(), 2u);
+  EXPECT_EQ(c.bridges[0].name, "road");
+  EXPECT_EQ(c.bridges[0].start, Vec2(50, -2));
+  EXPECT_EQ(c.bridges[0].end, Vec2(50, 22));
+  EXPECT_EQ(c.bridges[1].name, "rail");
+  EXPECT_EQ(c.bridges[1].backwater_distance, 25.0);
+  EXPECT_THAT(c.bridges[1].origin, HasSubstr("bridges.geojson"));
+  EXPECT_FALSE(c.bridges[0].deck.has_value());
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -62,6 +62,7 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
+  deck_edges_ = find_deck_edges(cells_, flow_case.bridges);
   if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
     FrictionCoefficients k = flotsam::friction_coefficients(
         flow, cells_.centroid, [](int i) { return fmt::format("cell {}", i); });
@@ -209,9 +210,42 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
     edge_speed_[edge] = f.max_speed;
   }
 
+  deck_fluxes();
+
   std::fill(outflow_rate_.begin(), outflow_rate_.end(), 0.0);
   for (int edge : c.boundary_edges)
     outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
+}
+
+// The edges a deck stands on (deck_flux.hpp), once the water reaches its soffit on either side:
+// the ordinary discharge limited to the structure's, carried with the upstream cell's velocity;
+// each side's own hydrostatic pressure on the structure (side_*: the whole g h^2 / 2, the flux
+// holding none); and the jets' momentum, less what the discharge carried, to the downstream side.
+void FiniteVolumeSolver::deck_fluxes() const {
+  const CellMesh& c = cells_;
+  const double g = g_;
+  for (const DeckEdge& d : deck_edges_) {
+    const int e = d.edge, i = c.left[e], j = c.right[e];
+    if (std::max(field_.eta[i], field_.eta[j]) < d.soffit) continue;  // free: the ordinary flux
+    const FaceState L = face_value(field_, i, c.left_slot[e]);
+    const FaceState R = face_value(field_, j, c.right_slot[e]);
+    const double z_e = std::max(z_[i], z_[j]);  // [m] the cells' beds: the opening as built
+    const bool from_left = flux_mass_[e] >= 0.0;
+    const int up = from_left ? i : j, down = from_left ? j : i;
+    const Vec2 u_up(field_.u[up], field_.v[up]);
+    const double energy = field_.eta[up] + 0.5 * u_up.squaredNorm() / g - z_e;  // [m]
+    const double opening = std::max(0.0, d.soffit - z_e);                       // [m]
+    const DeckFlow f = deck_flow(energy, field_.eta[down] - z_e, opening, d.crest - z_e,
+                                 d.projection, std::abs(flux_mass_[e]), g);
+    const Vec2 along = (from_left ? 1.0 : -1.0) * c.normal[e];  // from up to down
+    flux_mass_[e] = (from_left ? 1.0 : -1.0) * f.discharge;
+    flux_x_[e] = flux_mass_[e] * u_up.x();
+    flux_y_[e] = flux_mass_[e] * u_up.y();
+    const double jets = f.momentum - f.discharge * u_up.dot(along);  // [m^3/s^2]
+    side_left_[e] = 0.5 * g * L.h * L.h + (from_left ? 0.0 : jets);
+    side_right_[e] = 0.5 * g * R.h * R.h + (from_left ? jets : 0.0);
+    edge_speed_[e] = std::max(edge_speed_[e], f.jet_speed + std::sqrt(g * opening));
+  }
 }
 
 // Per cell: minus the sum of the fluxes out through its edges, the bed-slope source of the

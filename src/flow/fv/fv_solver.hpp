@@ -9,9 +9,9 @@
 //
 // where L is the finite-volume operator:  reconstruct (reconstruction.hpp) -> edge fluxes
 // (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
-// states, fv_boundary.hpp) -> sum per cell with the bed-slope, Coriolis, wind and body sources;
-// R = (w_i int r dt, 0, 0) the rain of the sub-step and infiltration its loss (rain_source.hpp,
-// (M-17)).
+// states, fv_boundary.hpp; the edges under bridge decks, deck_flux.hpp) -> sum per cell with the
+// bed-slope, Coriolis, wind and body sources; R = (w_i int r dt, 0, 0) the rain of the sub-step and
+// infiltration its loss (rain_source.hpp, (M-17)).
 #include <functional>
 #include <memory>
 #include <vector>
@@ -19,6 +19,7 @@
 #include "core/vec.hpp"
 #include "flow/friction.hpp"
 #include "flow/fv/cell_mesh.hpp"
+#include "flow/fv/deck_flux.hpp"
 #include "flow/fv/fv_boundary.hpp"
 #include "flow/fv/rain_source.hpp"
 #include "flow/fv/reconstruction.hpp"
@@ -100,6 +101,7 @@ class FiniteVolumeSolver {
   /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
   void evaluate(const ConservedState& U, double t) const;
   void compute_edge_fluxes(double t) const;
+  void deck_fluxes() const;  // the edges under bridge decks (deck_flux.hpp)
   void sum_cell_rates(const ConservedState& U) const;
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
@@ -115,6 +117,7 @@ class FiniteVolumeSolver {
   std::shared_ptr<const CellMesh> shared_cells_;  // owns cells_
   const CellMesh& cells_;
   FvBoundaries boundaries_;
+  std::vector<DeckEdge> deck_edges_;  // the edges under bridge decks
   FrictionModel friction_;
   std::vector<double> friction_coefficient_;  // n, C or K per cell (the law's unit)
   std::function<void(double, double)> sub_step_observer_;

@@ -1,0 +1,220 @@
+// Verifies the water under and over a bridge deck (src/flow/fv/deck_flux.hpp, docs/model.md
+// "Decks: the water") in a frictionless flume 100 m long and 2 m wide, a discharge q per metre
+// in at x = 0, the deck's axis across it at x = 50 m, and beyond it the bed 1 m lower with a free
+// outflow at x = 100 m, so that nothing downstream drowns the structure. At the steady state the
+// upstream energy head E = h + u^2 / (2 g) (mean of the cells 20-30 m upstream) must carry q by:
+//   (b) the opening a under the deck as a sluice gate flowing free with its jet filling the
+//       opening (contraction coefficient C_c = 1, the energy relation of a gate):
+//         q = a sqrt(2 g (E - a))                                   within 3 %, on three meshes;
+//   (c) a deck without opening, overtopped: the broad-crested weir of crest height P,
+//         q = (2/3)^{3/2} g^{1/2} (E - P)^{3/2}                      within 3 %;
+//   (d) both at once: q = the sum of the two                          within 3 %;
+// and (a) with the water below the soffit the flow is that of the flume without a deck, bit for
+// bit; (e) a slowly rising hydrograph through both transitions gives an upstream stage that rises
+// without oscillating; (f) a lake at rest under and around a submerged deck over a wavy bed stays
+// at rest to round-off. The water balance closes to round-off in all of them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <utility>
+#include <vector>
+
+#include "../support/fv_cases.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double g = 9.81;          // [m s^-2]
+constexpr double width = 2.0;       // [m]
+constexpr double axis_x = 50.0;     // [m]
+constexpr double tolerance = 0.03;  // [-] of the discharge
+
+Case flume(double q, double soffit, double top) {
+  Case c = test::fv_case({"bottom", "top"});
+  c.flow.boundaries.push_back(
+      {BoundaryCondition::Kind::discharge, "left", TimeSeries(q * width), TimeSeries(0.0)});
+  c.flow.boundaries.push_back(
+      {BoundaryCondition::Kind::free, "right", TimeSeries(0.0), TimeSeries(0.0)});
+  c.bed.kind = BedConfig::Kind::expression;
+  c.bed.expression = Expression("x <= 50 ? 0 : -1", "the flume's drop");
+  c.flow.initial_eta = Expression("x <= 50 ? 0.5 : -0.9", "still water");
+  c.bridges = {{.name = "deck",
+                .start = Vec2(axis_x, -1.0),
+                .end = Vec2(axis_x, width + 1.0),
+                .pier_groups = {},
+                .deck = DeckConfig{.soffit = soffit,
+                                   .top = top,
+                                   .width = 6.0,
+                                   .railing_height = 0.0,
+                                   .railing_open = true},
+                .backwater_distance = 0.0,
+                .origin = "test"}};
+  return c;
+}
+
+Mesh flume_mesh(int cells_per_metre) {
+  return make_rectangle_mesh({0.0, 0.0, 100.0, width, 100 * cells_per_metre, 2, true});
+}
+
+struct Steady {
+  double energy = 0.0;   // [m] upstream energy head over the bed (x in [20, 30] m)
+  double stage = 0.0;    // [m] upstream surface there
+  double outflow = 0.0;  // [m^3/s] through the outlet at the end
+  double balance = 0.0;  // [-] the water balance's relative error
+};
+
+/// The upstream means over the cells with centroid x in [x0, x1] [m].
+Steady measure(const FvEngine& engine, double x0 = 20.0, double x1 = 30.0) {
+  const FiniteVolumeSolver& s = engine.solver();
+  const CellMesh& cells = s.cells();
+  Steady m;
+  double area = 0.0;
+  for (int i = 0; i < cells.cell_count; ++i) {
+    const double x = cells.centroid[i].x();
+    if (x < x0 || x > x1) continue;
+    const double h = s.state().h[i], u = s.state().hu[i] / h;
+    m.energy += cells.area[i] * (h + u * u / (2 * g));
+    m.stage += cells.area[i] * (h + s.bed()[i]);
+    area += cells.area[i];
+  }
+  m.energy /= area;
+  m.stage /= area;
+  m.outflow = engine.water_balance().group_rate.at(
+      static_cast<std::size_t>(engine.mesh().find_group("right")));
+  m.balance = engine.water_balance().relative_error();
+  return m;
+}
+
+Steady run_steady(const Case& c, int cells_per_metre, double end = 400.0) {
+  const Mesh mesh = flume_mesh(cells_per_metre);
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  test::run_to(engine, end, 1.0);
+  return measure(engine);
+}
+
+double gate(double E, double a) {
+  return a * std::sqrt(2 * g * (E - a));
+}
+double weir(double E, double P) {
+  return std::pow(2.0 / 3.0, 1.5) * std::sqrt(g) * std::pow(E - P, 1.5);
+}
+
+TEST(DeckHydraulics, BelowTheSoffitTheFlowIsThatWithoutADeckBitForBit) {
+  Case with = flume(0.3, 3.0, 4.0);
+  Case without = with;
+  without.bridges.clear();
+  const Mesh mesh = flume_mesh(2);
+  FvEngine a(mesh, with), b(mesh, without);
+  a.initialize();
+  b.initialize();
+  test::run_to(a, 200.0, 1.0);
+  test::run_to(b, 200.0, 1.0);
+  EXPECT_LT(*std::max_element(a.solver().state().h.begin(), a.solver().state().h.end()), 3.0);
+  EXPECT_EQ(a.solver().state().h, b.solver().state().h);
+  EXPECT_EQ(a.solver().state().hu, b.solver().state().hu);
+  EXPECT_EQ(a.solver().state().hv, b.solver().state().hv);
+}
+
+TEST(DeckHydraulics, UnderTheDeckASluiceGateFlowingFreeOnThreeMeshes) {
+  const double q = 1.0, a = 0.3;  // [m^2/s], [m]: E about 0.87 m, upstream Froude 0.46
+  for (const int n : {1, 2, 4}) {
+    const Steady m = run_steady(flume(q, a, 5.0), n);
+    const double predicted = gate(m.energy, a);
+    std::printf(
+        "gate, %d cells/m: E = %.4f m, q by the gate relation %.4f against %.4f m^2/s "
+        "(%+.2f %%), outflow %.4f m^3/s, balance %.1e\n",
+        n, m.energy, predicted, q, 100 * (predicted / q - 1), m.outflow, m.balance);
+    EXPECT_NEAR(predicted / q, 1.0, tolerance) << n << " cells per metre";
+    EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width) << "not steady";
+    EXPECT_LT(std::abs(m.balance), 1e-12);
+  }
+}
+
+TEST(DeckHydraulics, ADeckWithoutOpeningOvertoppedIsABroadCrestedWeir) {
+  const double q = 1.0, P = 1.0;  // [m^2/s], [m]: the soffit at the bed, the top 1 m above it
+  const Steady m = run_steady(flume(q, 0.0, P), 2);
+  const double predicted = weir(m.energy, P);
+  std::printf(
+      "weir: E = %.4f m, q by the weir relation %.4f against %.4f m^2/s (%+.2f %%), "
+      "balance %.1e\n",
+      m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
+  EXPECT_NEAR(predicted / q, 1.0, tolerance);
+  EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width);
+  EXPECT_LT(std::abs(m.balance), 1e-12);
+}
+
+TEST(DeckHydraulics, UnderAndOverAtOnceTheDischargesAdd) {
+  const double q = 2.0, a = 0.3, P = 1.0;  // [m^2/s], [m], [m]: E about 1.47 m
+  const Steady m = run_steady(flume(q, a, P), 2);
+  const double predicted = gate(m.energy, a) + weir(m.energy, P);
+  std::printf(
+      "gate and weir: E = %.4f m, q by the two relations %.4f against %.4f m^2/s "
+      "(%+.2f %%), balance %.1e\n",
+      m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
+  EXPECT_NEAR(predicted / q, 1.0, tolerance);
+  EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width);
+  EXPECT_LT(std::abs(m.balance), 1e-12);
+}
+
+TEST(DeckHydraulics, ARisingHydrographGivesAStageThatRisesWithoutOscillating) {
+  // q from 0.1 to 4 m^2/s over 3,000 s: the surface just upstream of the deck (44-49 m) rises
+  // through the soffit (0.5 m) and the deck top (1.2 m); the stage every 10 s must never fall by
+  // more than 1 mm.
+  Case c = flume(0.0, 0.5, 1.2);
+  c.flow.boundaries[2].value =
+      TimeSeries(std::vector<std::pair<double, double>>{{0.0, 0.1 * width}, {3000.0, 4.0 * width}});
+  const Mesh mesh = flume_mesh(2);
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  test::run_to(engine, 200.0, 1.0);  // settled at the lowest discharge
+  double previous = measure(engine, 44.0, 49.0).stage, lowest = previous, fall = 0.0;
+  while (engine.time() < 3000.0 - 1e-9) {
+    test::run_to(engine, engine.time() + 10.0, 1.0);
+    const double stage = measure(engine, 44.0, 49.0).stage;
+    fall = std::max(fall, previous - stage);
+    previous = stage;
+  }
+  std::printf("rising hydrograph: stage %.3f -> %.3f m, largest fall over 10 s %.2e m\n", lowest,
+              previous, fall);
+  EXPECT_LT(lowest, 0.5);    // it started below the soffit
+  EXPECT_GT(previous, 1.2);  // and ended over the deck
+  EXPECT_LT(fall, 1e-3);
+  EXPECT_LT(std::abs(engine.water_balance().relative_error()), 1e-12);
+}
+
+TEST(DeckHydraulics, ALakeAtRestUnderAndAroundASubmergedDeckStaysAtRest) {
+  Case c = test::fv_case({"left", "right", "bottom", "top"});
+  c.bed.kind = BedConfig::Kind::expression;
+  c.bed.expression = Expression("0.2 * sin(x / 7) + 0.1 * cos(y * 2)", "a wavy bed");
+  c.flow.initial_eta_start = c.flow.initial_eta_end = 1.0;
+  c.bridges = {{.name = "deck",
+                .start = Vec2(axis_x, -1.0),
+                .end = Vec2(axis_x, width + 1.0),
+                .pier_groups = {},
+                .deck = DeckConfig{.soffit = 0.6,
+                                   .top = 0.9,
+                                   .width = 6.0,
+                                   .railing_height = 0.0,
+                                   .railing_open = true},
+                .backwater_distance = 0.0,
+                .origin = "test"}};
+  const Mesh mesh = flume_mesh(2);
+  FvEngine engine(mesh, c);
+  engine.initialize();
+  test::run_to(engine, 100.0, 1.0);
+  const FiniteVolumeSolver& s = engine.solver();
+  double speed = 0.0, surface = 0.0;
+  for (int i = 0; i < s.cells().cell_count; ++i) {
+    speed = std::max({speed, std::abs(s.state().hu[i]), std::abs(s.state().hv[i])});
+    surface = std::max(surface, std::abs(s.state().h[i] + s.bed()[i] - 1.0));
+  }
+  std::printf("lake at rest under a deck: |hu| %.1e m^2/s, |eta - 1| %.1e m\n", speed, surface);
+  EXPECT_LE(speed, 1e-12);
+  EXPECT_LE(surface, 1e-12);
+  EXPECT_LT(std::abs(engine.water_balance().relative_error()), 1e-12);
+}
+
+}  // namespace
+}  // namespace flotsam
