@@ -32,7 +32,7 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
     write_boundary((directory_ / "boundary.vtp").string());
   else
     write_shared_file(shared_folder_, "boundary.vtp", directory_ / "boundary.vtp", write_boundary);
-  write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group_});
+  write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group_, layout.decks});
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
                                          balance_columns(mesh));
 }

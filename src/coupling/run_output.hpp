@@ -14,6 +14,7 @@
 //                                         every output (output.rasters)
 //   <name>_crs.wkt                        the coordinate system of every coordinate written,
 //                                         when the case has one
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -34,6 +35,7 @@ namespace flotsam {
 struct RunLayout {
   std::vector<std::uint8_t> open_group;  // per mesh group: 1 inflow/outflow, 0 wall
   bool rain = false;
+  std::vector<std::array<Vec2, 4>> decks;  // [m] bridge decks' footprints, for the pictures
 };
 
 class RunOutput {

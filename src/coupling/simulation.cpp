@@ -98,6 +98,11 @@ RunLayout Simulation::run_layout() const {
   layout.open_group.assign(mesh_.group_names.size(), 0);
   for (int g : outflow_groups_) layout.open_group[g] = 1;
   layout.rain = case_.flow.rain.enabled;
+  for (const Bridge& b : jam_geometry_.bridges) {
+    if (!b.deck) continue;
+    const Vec2 half = 0.5 * b.deck->width * b.downstream;  // [m]
+    layout.decks.push_back({b.start - half, b.end - half, b.end + half, b.start + half});
+  }
   return layout;
 }
 

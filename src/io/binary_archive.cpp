@@ -107,6 +107,18 @@ ArchiveReader::ArchiveReader(const std::string& path) : path_(path), in_(path, s
         file_version, archive_version);
 }
 
+bool ArchiveReader::next_is(const std::string& name) {
+  const auto start = in_.tellg();
+  std::uint32_t length = 0;
+  in_.read(reinterpret_cast<char*>(&length), sizeof length);
+  std::string found(in_ && length == name.size() ? length : 0, '\0');
+  in_.read(found.data(), static_cast<std::streamsize>(found.size()));
+  const bool same = in_ && length == name.size() && found == name;
+  in_.clear();
+  in_.seekg(start);
+  return same;
+}
+
 std::uint64_t ArchiveReader::next_record(const std::string& name, std::uint32_t element_size) {
   checksum_->reset();
   auto get = [&](void* bytes, std::size_t size) {

@@ -198,6 +198,9 @@ class ArchiveReader {
     auto bytes = read<char>(name);
     return std::string(bytes.begin(), bytes.end());
   }
+  /// Whether the next record is called `name` (nothing is read): for a record that files of
+  /// older versions do not have.
+  bool next_is(const std::string& name);
   /// Reads the closing record and checks that nothing follows it: call after the last record.
   void finish();
   const std::string& path() const { return path_; }

@@ -43,6 +43,7 @@ void write_run_description(const std::string& path, const RunDescription& run) {
   w.write("mesh.node_tags", m.node_tags);
   w.write("mesh.element_tags", m.element_tags);
   w.write("open_group", run.open_group);
+  if (!run.decks.empty()) w.write("decks", run.decks);
   w.close();
 }
 
@@ -62,6 +63,7 @@ RunDescription read_run_description(const std::string& path) {
   m.node_tags = r.read<long>("mesh.node_tags");
   m.element_tags = r.read<long>("mesh.element_tags");
   run.open_group = r.read<std::uint8_t>("open_group");
+  if (r.next_is("decks")) run.decks = r.read<std::array<Vec2, 4>>("decks");
   r.finish();
   return run;
 }

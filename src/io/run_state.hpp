@@ -4,6 +4,7 @@
 //   run.bin              once: the case's name, the mesh, and which boundary groups are open
 //   state_NNNNNN.bin     at every output: time, flow fields, bodies (pose, size, state, jammed)
 // Both are binary archives (io/binary_archive.hpp) of named arrays.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,7 +17,9 @@ namespace flotsam {
 struct RunDescription {
   std::string name;  // the case's name
   Mesh mesh;
-  std::vector<std::uint8_t> open_group;  // per Mesh::group_names: 1 inflow/outflow, 0 wall
+  std::vector<std::uint8_t> open_group;    // per Mesh::group_names: 1 inflow/outflow, 0 wall
+  std::vector<std::array<Vec2, 4>> decks;  // [m] each bridge deck's footprint, corners in order
+                                           // (none: the record is not written)
 };
 
 /// One output time of a run.

@@ -119,6 +119,18 @@ void draw_boundaries(cairo_t* cr, const Scene& scene, const FrameLayout& layout)
       cairo_stroke(cr);
     }
   }
+  // Decks: the pier colour, translucent, outlined as walls.
+  for (const auto& deck : scene.decks) {
+    for (std::size_t k = 0; k < deck.size(); ++k) {
+      const Vec2 p = layout.to_pixel(deck[k]);
+      k == 0 ? cairo_move_to(cr, p.x(), p.y()) : cairo_line_to(cr, p.x(), p.y());
+    }
+    cairo_close_path(cr);
+    set_colour(cr, pier_colour, 0.45);
+    cairo_fill_preserve(cr);
+    stroke_style(cr, BoundaryKind::wall, 0.5 * f);
+    cairo_stroke(cr);
+  }
   cairo_restore(cr);
 }
 

@@ -2,7 +2,7 @@
 // The domain's edges (docs/rendering.md): boundary edges chained into closed loops; a loop that
 // runs clockwise is a hole of the mesh (a pier, an island) and is filled grey; walls are thick
 // dark grey lines, open boundaries dashed blue ones. Curved edges are drawn through their mid
-// node (the parabola of the P2 edge, as a Bezier curve).
+// node (the parabola of the P2 edge, as a Bezier curve). Bridge decks are translucent slabs.
 #include <cairo.h>
 
 #include <vector>

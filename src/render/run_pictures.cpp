@@ -69,6 +69,7 @@ Scene base_scene(const RunDescription& run, const RunSnapshot& s, const PictureO
   scene.wet = s.wet;
   for (std::uint8_t open : run.open_group)
     scene.boundary_kinds.push_back(open ? BoundaryKind::open : BoundaryKind::wall);
+  scene.decks = run.decks;
   return scene;
 }
 

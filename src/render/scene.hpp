@@ -3,6 +3,7 @@
 // piers, the bodies coloured by category, optional velocity arrows, a colour bar, title, time
 // stamp and scale bar. A Scene holds its own copies of the values (a frame is drawn long after
 // the step that made it may have moved on); only the mesh is referenced.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -93,6 +94,9 @@ struct Scene {
 
   // Per Mesh::group_names entry; empty: by name (default_boundary_kind).
   std::vector<BoundaryKind> boundary_kinds;
+  // Bridge decks' footprints [m] (corners in order), drawn translucent over the water so that
+  // what floats against and under them stays visible; empty: none.
+  std::vector<std::array<Vec2, 4>> decks;
 };
 
 /// Open when the name contains "inflow", "outflow", "inlet", "outlet" or "open"; else wall.

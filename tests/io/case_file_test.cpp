@@ -1129,10 +1129,7 @@ TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAndAxes) {
   {"type": "Feature", "properties": {"name": "rail"},
    "geometry": {"type": "LineString", "coordinates": [[80, -2], [80, 22]]}}]})";
   const std::string text =
-      test::replaced(base_case, "  channel: {length: 100, width: 20}",
-                     "  polygon: {points: [[0, 0], [100, 0], [100, 20], [0, 20]],\n"
-                     "            groups: [bank_right, outflow, bank_left, inflow]}") +
-      "bridges: {file: bridges.geojson, backwater_distance: 25}\n";
+      with_bridges("bridges: {file: bridges.geojson, backwater_distance: 25}\n", "fem");
   const Case c = parse_case(text, (dir / "case.yaml").string());
   ASSERT_EQ(c.bridges.size(), 2u);
   EXPECT_EQ(c.bridges[0].name, "road");

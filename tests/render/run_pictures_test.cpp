@@ -39,5 +39,24 @@ TEST(RunPictures, AStateFileOfAnotherRunIsRefusedNamingTheFile) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(RunDescription, DecksRoundTripAndARunWithoutThemReadsAsBefore) {
+  const auto dir = test::fresh_test_folder("flotsam_run_description_decks");
+  RunDescription run;
+  run.name = "bridge";
+  run.mesh = make_rectangle_mesh({.length = 10, .width = 4, .nx = 5, .ny = 2});
+  run.open_group.assign(run.mesh.group_names.size(), 1);
+  write_run_description((dir / "plain.bin").string(), run);
+  run.decks = {{Vec2(4, -1), Vec2(4, 5), Vec2(6, 5), Vec2(6, -1)}};
+  write_run_description((dir / "deck.bin").string(), run);
+  const RunDescription plain = read_run_description((dir / "plain.bin").string());
+  const RunDescription deck = read_run_description((dir / "deck.bin").string());
+  EXPECT_TRUE(plain.decks.empty());
+  EXPECT_EQ(plain.open_group, run.open_group);
+  ASSERT_EQ(deck.decks.size(), 1u);
+  EXPECT_EQ(deck.decks[0], run.decks[0]);
+  EXPECT_EQ(deck.mesh.nodes, run.mesh.nodes);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace flotsam

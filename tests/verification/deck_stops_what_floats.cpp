@@ -13,6 +13,7 @@
 // at the bridge, in a jam anchored on the deck's face, at least 8 of the last 20 steps: a body at
 // rest against a wall leaves its contact group every other step (the contact planner sees it still,
 // docs/model.md "Contacts"), and the statistics count contacts.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
+#include "core/error.hpp"
 #include "coupling/simulation.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -131,6 +133,18 @@ TEST(DeckStopsWhatFloats, ACarStopsAgainstTheFace) {
   EXPECT_LE(o.front_max, face_x + 0.01 * 1.8);
   EXPECT_GE(o.front_min, face_x - 0.2);
   EXPECT_GE(o.trapped_at_deck, 8);
+}
+
+TEST(DeckStopsWhatFloats, ADeckBelowTheBedIsRefusedNamingTheBridge) {
+  try {
+    (void)run_towards_deck(log_at(0.0), -2.0, -1.0);  // the bed is at 0 m
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()),
+                ::testing::HasSubstr("test: bridge 'footbridge': its deck's top (-1 m) is below "
+                                     "the bed everywhere along its axis (the lowest bed there is "
+                                     "0 m)"));
+  }
 }
 
 }  // namespace

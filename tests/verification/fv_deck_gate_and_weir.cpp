@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -117,45 +118,36 @@ TEST(DeckHydraulics, BelowTheSoffitTheFlowIsThatWithoutADeckBitForBit) {
   EXPECT_EQ(a.solver().state().hv, b.solver().state().hv);
 }
 
+/// Prints and checks one steady case: the discharge the relation gives from the measured head
+/// against the flume's q, the outflow against the inflow (steady), the balance to round-off.
+void expect_relation(const std::string& label, const Steady& m, double predicted, double q) {
+  std::printf(
+      "%s: E = %.4f m, q by the relation %.4f against %.4f m^2/s (%+.2f %%), balance "
+      "%.1e\n",
+      label.c_str(), m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
+  EXPECT_NEAR(predicted / q, 1.0, tolerance) << label;
+  EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width) << label << ": not steady";
+  EXPECT_LT(std::abs(m.balance), 1e-12) << label;
+}
+
 TEST(DeckHydraulics, UnderTheDeckASluiceGateFlowingFreeOnThreeMeshes) {
   const double q = 1.0, a = 0.3;  // [m^2/s], [m]: E about 0.87 m, upstream Froude 0.46
   for (const int n : {1, 2, 4}) {
     const Steady m = run_steady(flume(q, a, 5.0), n);
-    const double predicted = gate(m.energy, a);
-    std::printf(
-        "gate, %d cells/m: E = %.4f m, q by the gate relation %.4f against %.4f m^2/s "
-        "(%+.2f %%), outflow %.4f m^3/s, balance %.1e\n",
-        n, m.energy, predicted, q, 100 * (predicted / q - 1), m.outflow, m.balance);
-    EXPECT_NEAR(predicted / q, 1.0, tolerance) << n << " cells per metre";
-    EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width) << "not steady";
-    EXPECT_LT(std::abs(m.balance), 1e-12);
+    expect_relation("gate, " + std::to_string(n) + " cells/m", m, gate(m.energy, a), q);
   }
 }
 
 TEST(DeckHydraulics, ADeckWithoutOpeningOvertoppedIsABroadCrestedWeir) {
   const double q = 1.0, P = 1.0;  // [m^2/s], [m]: the soffit at the bed, the top 1 m above it
   const Steady m = run_steady(flume(q, 0.0, P), 2);
-  const double predicted = weir(m.energy, P);
-  std::printf(
-      "weir: E = %.4f m, q by the weir relation %.4f against %.4f m^2/s (%+.2f %%), "
-      "balance %.1e\n",
-      m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
-  EXPECT_NEAR(predicted / q, 1.0, tolerance);
-  EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width);
-  EXPECT_LT(std::abs(m.balance), 1e-12);
+  expect_relation("weir", m, weir(m.energy, P), q);
 }
 
 TEST(DeckHydraulics, UnderAndOverAtOnceTheDischargesAdd) {
   const double q = 2.0, a = 0.3, P = 1.0;  // [m^2/s], [m], [m]: E about 1.47 m
   const Steady m = run_steady(flume(q, a, P), 2);
-  const double predicted = gate(m.energy, a) + weir(m.energy, P);
-  std::printf(
-      "gate and weir: E = %.4f m, q by the two relations %.4f against %.4f m^2/s "
-      "(%+.2f %%), balance %.1e\n",
-      m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
-  EXPECT_NEAR(predicted / q, 1.0, tolerance);
-  EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width);
-  EXPECT_LT(std::abs(m.balance), 1e-12);
+  expect_relation("gate and weir", m, gate(m.energy, a) + weir(m.energy, P), q);
 }
 
 TEST(DeckHydraulics, ARisingHydrographGivesAStageThatRisesWithoutOscillating) {
