@@ -22,3 +22,15 @@ foreach(mode ${ensemble_modes})
 endforeach()
 set_tests_properties(cli.ensemble_reference PROPERTIES FIXTURES_SETUP cli_ensemble_reference)
 set_tests_properties(cli.ensemble_killed PROPERTIES SKIP_RETURN_CODE 77)
+
+# Blocking on a bridge of a mesh that is not the paper's channel (tiny_bridge_ensemble.yaml): two
+# logs across the flow stop against a low deck in every member, so the bridge, by its name, and
+# each of its two gaps block in 2 of 2 members per swept length (Wilson interval [0.342, 1]).
+add_test(NAME cli.ensemble_bridge_on_a_region_mesh
+         COMMAND ${CMAKE_COMMAND}
+                 "-DCOMMAND=$<TARGET_FILE:flotsam>;ensemble;${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_bridge_ensemble.yaml;-o;${CMAKE_CURRENT_BINARY_DIR}/ensemble_bridge;--jobs;2;--no-pictures"
+                 -DEXPECT_EXIT=0
+                 "-DEXPECT_REGEX=blocked footbridge +2/2 +p 1.000 +95% .0.342, 1.000.\n  blocked footbridge gap 1 +2/2 +p 1.000[^\n]*\n  blocked footbridge gap 2 +2/2 +p 1.000.*log_length = 20 m: 2 members, 0 failed\n  blocked footbridge +2/2"
+                 -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
+set_tests_properties(cli.ensemble_bridge_on_a_region_mesh PROPERTIES LABELS "cli"
+                     ENVIRONMENT "${test_environment}")
