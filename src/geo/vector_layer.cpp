@@ -92,6 +92,12 @@ VectorLayer read_vector_layer(const std::string& path, const std::string& layer,
         for (const auto& p : *flat->toLineString()) line.points.emplace_back(p.getX(), p.getY());
         line.name = name;
         if (!label_field.empty()) line.label = feature->GetFieldAsString(label_field.c_str());
+        for (int k = 0; k < fields->GetFieldCount(); ++k) {
+          const OGRFieldType type = fields->GetFieldDefn(k)->GetType();
+          if ((type == OFTReal || type == OFTInteger || type == OFTInteger64) &&
+              feature->IsFieldSetAndNotNull(k))
+            line.numbers[fields->GetFieldDefn(k)->GetNameRef()] = feature->GetFieldAsDouble(k);
+        }
         out.lines.push_back(std::move(line));
         break;
       }

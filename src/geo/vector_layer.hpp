@@ -3,6 +3,7 @@
 // layer (a domain's outline, building footprints, roughness zones, pier outlines) and its lines
 // (named boundary lines). Each feature keeps its id and layer for messages, so that bad geometry
 // is reported as "buildings.gpkg, layer 'buildings', feature 17: ...".
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,11 +21,12 @@ struct GeoPolygon {
   std::optional<double> value;           // the attribute asked for (e.g. a Manning n), if any
 };
 
-/// One line of a layer with the text of its name attribute.
+/// One line of a layer with the text of its name attribute and its numeric attributes.
 struct GeoLine {
-  std::vector<Vec2> points;  // [m]
-  std::string label;         // the name attribute's value
-  std::string name;          // "<file>, layer '<layer>', feature <fid>"
+  std::vector<Vec2> points;               // [m]
+  std::string label;                      // the name attribute's value
+  std::string name;                       // "<file>, layer '<layer>', feature <fid>"
+  std::map<std::string, double> numbers;  // every numeric attribute that holds a value
 };
 
 struct VectorLayer {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "io/case_sections.hpp"
 
@@ -57,6 +58,36 @@ BridgeConfig read_bridge(const YamlValue& item, int index) {
   return bridge;
 }
 
+/// A deck from a line's attributes soffit, deck_top, deck_width, railing_height (0),
+/// railing_open (1): none without soffit; InputError naming the feature for a partial or
+/// inconsistent one.
+std::optional<DeckConfig> deck_of(const GeoLine& line, const YamlValue& where) {
+  const auto number = [&](const char* key) -> std::optional<double> {
+    const auto it = line.numbers.find(key);
+    if (it == line.numbers.end()) return std::nullopt;
+    return it->second;
+  };
+  const auto soffit = number("soffit");
+  if (!soffit) return std::nullopt;
+  const auto top = number("deck_top"), width = number("deck_width");
+  if (!top || !width)
+    where.fail(
+        fmt::format("{}: a deck needs soffit, deck_top and deck_width; deck_top or "
+                    "deck_width has no value",
+                    line.name));
+  DeckConfig deck{.soffit = *soffit,
+                  .top = *top,
+                  .width = *width,
+                  .railing_height = number("railing_height").value_or(0.0),
+                  .railing_open = number("railing_open").value_or(1.0) != 0.0};
+  if (!(deck.top > deck.soffit) || !(deck.width > 0.0) || deck.railing_height < 0.0)
+    where.fail(
+        fmt::format("{}: expected deck_top ({} m) above soffit ({} m), deck_width ({} m) "
+                    "> 0 and railing_height ({} m) >= 0",
+                    line.name, deck.top, deck.soffit, deck.width, deck.railing_height));
+  return deck;
+}
+
 }  // namespace
 
 std::vector<BridgeConfig> read_bridges(const YamlValue& value,
@@ -88,6 +119,7 @@ std::vector<BridgeConfig> read_bridges(const YamlValue& value,
       bridge.start = line.points.front();
       bridge.end = line.points.back();
       check_axis(bridge, value);
+      bridge.deck = deck_of(line, value);
       bridge.backwater_distance = distance;
       bridges.push_back(std::move(bridge));
     }

@@ -1118,18 +1118,19 @@ TEST(CaseFileError, BridgeMistakesAreNamed) {
 namespace flotsam {
 namespace {
 
-TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAndAxes) {
+TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAxesAndDecks) {
   const std::filesystem::path dir = test::scratch_path("flotsam_case_bridges_layer");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "bridges.geojson") << R"({"type": "FeatureCollection",
  "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32633"}},
  "features": [
-  {"type": "Feature", "properties": {"name": "road"},
+  {"type": "Feature", "properties": {"name": "road", "soffit": 2.5, "deck_top": 3.4,
+                                     "deck_width": 8, "railing_height": 1.1, "railing_open": 0},
    "geometry": {"type": "LineString", "coordinates": [[50, -2], [50, 22]]}},
   {"type": "Feature", "properties": {"name": "rail"},
    "geometry": {"type": "LineString", "coordinates": [[80, -2], [80, 22]]}}]})";
   const std::string text =
-      with_bridges("bridges: {file: bridges.geojson, backwater_distance: 25}\n", "fem");
+      with_bridges("bridges: {file: bridges.geojson, backwater_distance: 25}\n");
   const Case c = parse_case(text, (dir / "case.yaml").string());
   ASSERT_EQ(c.bridges.size(), 2u);
   EXPECT_EQ(c.bridges[0].name, "road");
@@ -1138,7 +1139,13 @@ TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAndAxes) {
   EXPECT_EQ(c.bridges[1].name, "rail");
   EXPECT_EQ(c.bridges[1].backwater_distance, 25.0);
   EXPECT_THAT(c.bridges[1].origin, HasSubstr("bridges.geojson"));
-  EXPECT_FALSE(c.bridges[0].deck.has_value());
+  ASSERT_TRUE(c.bridges[0].deck.has_value());
+  EXPECT_EQ(c.bridges[0].deck->soffit, 2.5);
+  EXPECT_EQ(c.bridges[0].deck->top, 3.4);
+  EXPECT_EQ(c.bridges[0].deck->width, 8.0);
+  EXPECT_EQ(c.bridges[0].deck->railing_height, 1.1);
+  EXPECT_FALSE(c.bridges[0].deck->railing_open);
+  EXPECT_FALSE(c.bridges[1].deck.has_value());
   std::filesystem::remove_all(dir);
 }
 
