@@ -9,10 +9,14 @@
 //   (c) a deck without opening, overtopped: the broad-crested weir of crest height P,
 //         q = (2/3)^{3/2} g^{1/2} (E - P)^{3/2}                      within 3 %;
 //   (d) both at once: q = the sum of the two                          within 3 %;
+// (b') the gate again on a flume turned by 30 degrees and meshed by Gmsh (mesh.region), where the
+// deck stands on a staircase of edges oblique to the axis, each passing its share |n_e . n_axis|
+// (within 8 %: the jets through the staircase partly drown it);
 // and (a) with the water below the soffit the flow is that of the flume without a deck, bit for
 // bit; (e) a slowly rising hydrograph through both transitions gives an upstream stage that rises
 // without oscillating; (f) a lake at rest under and around a submerged deck over a wavy bed stays
 // at rest to round-off. The water balance closes to round-off in all of them.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,6 +26,7 @@
 #include <vector>
 
 #include "../support/fv_cases.hpp"
+#include "mesh/mesh_generator.hpp"
 
 namespace flotsam {
 namespace {
@@ -120,12 +125,13 @@ TEST(DeckHydraulics, BelowTheSoffitTheFlowIsThatWithoutADeckBitForBit) {
 
 /// Prints and checks one steady case: the discharge the relation gives from the measured head
 /// against the flume's q, the outflow against the inflow (steady), the balance to round-off.
-void expect_relation(const std::string& label, const Steady& m, double predicted, double q) {
+void expect_relation(const std::string& label, const Steady& m, double predicted, double q,
+                     double relative = tolerance) {
   std::printf(
       "%s: E = %.4f m, q by the relation %.4f against %.4f m^2/s (%+.2f %%), balance "
       "%.1e\n",
       label.c_str(), m.energy, predicted, q, 100 * (predicted / q - 1), m.balance);
-  EXPECT_NEAR(predicted / q, 1.0, tolerance) << label;
+  EXPECT_NEAR(predicted / q, 1.0, relative) << label;
   EXPECT_NEAR(m.outflow, q * width, 1e-3 * q * width) << label << ": not steady";
   EXPECT_LT(std::abs(m.balance), 1e-12) << label;
 }
@@ -206,6 +212,67 @@ TEST(DeckHydraulics, ALakeAtRestUnderAndAroundASubmergedDeckStaysAtRest) {
   EXPECT_LE(speed, 1e-12);
   EXPECT_LE(surface, 1e-12);
   EXPECT_LT(std::abs(engine.water_balance().relative_error()), 1e-12);
+}
+
+TEST(DeckHydraulics, OnAGmshMeshTurnedAcrossTheAxisTheGateStillHolds) {
+  // The flume of `flume` turned by 30 degrees about the origin: local x' = c x + s y along it.
+  const double c = std::cos(pi / 6), s = std::sin(pi / 6), q = 1.0, a = 0.3;
+  const auto world = [&](double x, double y) { return Vec2(c * x - s * y, s * x + c * y); };
+  const std::string along = fmt::format("({} * x + {} * y)", c, s);
+  MeshSource source;
+  source.kind = MeshSource::Kind::region;
+  RegionGeometry& r = source.region;
+  r.outline = {{world(0, 0), world(100, 0), world(100, width), world(0, width)}, "outline"};
+  r.lines = {{"inflow", {world(0, width), world(0, 0)}, "inflow"},
+             {"outflow", {world(100, 0), world(100, width)}, "outflow"}};
+  r.mesh_size = 0.5;
+  const Mesh mesh = generate_mesh(source);
+  Case f = test::fv_case({"bank"});
+  f.flow.boundaries.push_back(
+      {BoundaryCondition::Kind::discharge, "inflow", TimeSeries(q * width), TimeSeries(0.0)});
+  f.flow.boundaries.push_back(
+      {BoundaryCondition::Kind::free, "outflow", TimeSeries(0.0), TimeSeries(0.0)});
+  f.bed.kind = BedConfig::Kind::expression;
+  // The drop 2 m past the axis: the cells the oblique staircase of deck edges separates have
+  // corners on both sides of the axis, and a drop at the axis would lower their beds (each the
+  // mean of its corners) and so the deck's opening measured from them.
+  f.bed.expression = Expression(along + " <= 52 ? 0 : -1", "the turned flume's drop");
+  f.flow.initial_eta = Expression(along + " <= 52 ? 0.5 : -0.9", "still water");
+  f.bridges = {
+      {.name = "deck",
+       .start = world(axis_x, -1.0),
+       .end = world(axis_x, width + 1.0),
+       .pier_groups = {},
+       .deck =
+           DeckConfig{
+               .soffit = a, .top = 5.0, .width = 6.0, .railing_height = 0.0, .railing_open = true},
+       .backwater_distance = 0.0,
+       .origin = "test"}};
+  FvEngine engine(mesh, f);
+  engine.initialize();
+  test::run_to(engine, 400.0, 1.0);
+  // The energy head of the cells 20-30 m along the flume (x' from the centroids).
+  const FiniteVolumeSolver& solver = engine.solver();
+  Steady m;
+  double area = 0.0;
+  for (int i = 0; i < solver.cells().cell_count; ++i) {
+    const Vec2 p = solver.cells().centroid[i];
+    const double x = c * p.x() + s * p.y();
+    if (x < 20.0 || x > 30.0) continue;
+    const double h = solver.state().h[i];
+    const double speed2 =
+        (std::pow(solver.state().hu[i], 2) + std::pow(solver.state().hv[i], 2)) / (h * h);
+    m.energy += solver.cells().area[i] * (h + speed2 / (2 * g));
+    area += solver.cells().area[i];
+  }
+  m.energy /= area;
+  m.outflow =
+      engine.water_balance().group_rate.at(static_cast<std::size_t>(mesh.find_group("outflow")));
+  m.balance = engine.water_balance().relative_error();
+  // 8 %: the jets leave an oblique staircase of edges through cells of mixed shape, and where
+  // one of them runs deeper than the opening it drowns that edge's share (D-1's tailwater);
+  // measured +5.0 % (the aligned flume: within 0.05 %).
+  expect_relation("gate, turned Gmsh mesh", m, gate(m.energy, a), q, 0.08);
 }
 
 }  // namespace
