@@ -1,0 +1,120 @@
+// Verifies that a fixed jam at a bridge raises the water upstream as the momentum balance of the
+// reach predicts (finite volumes, two-way, docs/model.md "Jam statistics"): a frictionless,
+// inviscid straight channel 300 m x 20 m (3 m x 1.4 m rectangles, two triangles each) carrying
+// 30 m^3/s at 2 m depth, a bridge across it at
+// x = 150 m, and a raft of wood anchored against it (a box 10 m across the flow, 2 m along it,
+// drawing 1.2 m: half the width closed). Over the reach from x1 = 120 m to x2 = 180 m the
+// control-volume momentum balance (Chow 1959, ch. 3) reads, for the mean over the last 600 s of
+// a 1,200 s run (the wake sheds eddies),
+//   M(x1) - M(x2) = F,   M(x) = rho * integral over the section of (h u^2 + g h^2 / 2) dy,
+// with F the force the raft exchanges with the water (the sum of its reaction, exact to
+// round-off by two_way_momentum_exchange.cpp). Checked: the balance within 2 % of F, and the
+// rise the run reports for the bridge (its backwater section 20 m upstream, against the same
+// flow without the raft, `output.backwater`) within 5 % of the rise the balance predicts there:
+// the depth h1 upstream that carries the momentum function of the section downstream plus F,
+//   B (q^2 / h1 + g h1^2 / 2) = B (q^2 / h2 + g h2^2 / 2) + F / rho,
+// against the depth the same solve gives without the raft (F = 0): a 1D reading of a 2D reach,
+// hence the looser tolerance. Measured on a mesh twice as fine: +1.08 % and -2.07 %.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "../support/straight_channel.hpp"
+#include "core/constants.hpp"
+#include "coupling/simulation.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double length = 300.0, width = 20.0, H0 = 2.0, Q = 30.0;  // [m], [m], [m], [m^3/s]
+constexpr double end_time = 1200.0, averaging_time = 600.0;         // [s]
+constexpr double rho = water_density_default, g = gravity;
+
+Case channel_with_raft() {
+  Case c = test::straight_channel_case("raft", Q, H0);
+  c.flow.engine = FlowEngineKind::fv;
+  c.flow.viscosity = 1e-6;
+  c.time = {.end = end_time, .step = 5.0, .mode = CouplingMode::two_way};
+  c.output.backwater = true;
+  c.bodies.physics.drag_law = DragLaw::constant;
+  c.bodies.physics.drag_coefficient = 1.2;
+  BodySpec raft;
+  raft.shape = Shape::box;
+  raft.length = 10.0;
+  raft.width = 2.0;
+  raft.height = 2.0;
+  raft.density = 600.0;
+  raft.position = Vec2(148.0, 0.5 * width);
+  raft.angle = pi / 2;
+  raft.anchored = true;
+  c.bodies.bodies = {raft};
+  c.bridges = {{.name = "bridge",
+                .start = Vec2(150.0, -1.0),
+                .end = Vec2(150.0, width + 1.0),
+                .pier_groups = {},
+                .deck = std::nullopt,
+                .backwater_distance = 20.0,
+                .origin = "test"}};
+  return c;
+}
+
+/// The depth [m] upstream whose momentum function per width, q^2 / h + g h^2 / 2, exceeds that
+/// of depth h2 by `excess` [m^3/s^2] (the subcritical root, by Newton from h2).
+double depth_upstream(double q, double h2, double excess) {
+  const double target = q * q / h2 + 0.5 * g * h2 * h2 + excess;
+  double h = h2;
+  for (int k = 0; k < 50; ++k)
+    h -= (q * q / h + 0.5 * g * h * h - target) / (g * h - q * q / (h * h));
+  return h;
+}
+
+TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
+  Simulation s(
+      channel_with_raft(),
+      make_rectangle_mesh({.length = length, .width = width, .nx = 100, .ny = 14}),
+      {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
+  s.initialize();
+  const FlowField& flow = s.flow().field();
+  // rho * integral of (h u^2 + g h^2 / 2) dy across x [N] (flat bed at 0: h = eta), and the
+  // section's mean depth [m].
+  const auto section = [&](double x, double& depth) {
+    double sum = 0.0, h_sum = 0.0;
+    const int samples = 200;
+    int hint = -1;
+    for (int k = 0; k < samples; ++k) {
+      const FlowSample f = flow.sample(Vec2(x, width * (k + 0.5) / samples), s.time(), hint);
+      sum += f.H * f.u.x() * f.u.x() + 0.5 * g * f.H * f.H;
+      h_sum += f.H;
+    }
+    depth = h_sum / samples;
+    return rho * sum * width / samples;
+  };
+  double balance = 0.0, force = 0.0, rise = 0.0, h2 = 0.0;  // means over the averaging time
+  int n = 0;
+  while (!s.done()) {
+    s.step();
+    if (s.time() <= end_time - averaging_time + 1e-9) continue;
+    double d1 = 0.0, d2 = 0.0;
+    balance += section(120.0, d1) - section(180.0, d2);
+    h2 += d2;
+    force += s.bodies().reaction_force[0].x();
+    rise += s.backwater_rise().at(0);
+    ++n;
+  }
+  balance /= n, force /= n, rise /= n, h2 /= n;
+  const double q = Q / width;  // [m^2/s]
+  const double predicted =
+      depth_upstream(q, h2, force / (rho * width)) - depth_upstream(q, h2, 0.0);  // [m]
+  std::printf(
+      "momentum: reach %.1f N, exchanged %.1f N (%+.2f %%); rise 20 m upstream %.4f m, "
+      "by the balance %.4f m (%+.2f %%)\n",
+      balance, force, 100 * (balance / force - 1), rise, predicted, 100 * (rise / predicted - 1));
+  EXPECT_GT(force, 0.0);
+  EXPECT_NEAR(balance, force, 0.02 * force);
+  EXPECT_NEAR(rise, predicted, 0.05 * predicted);
+}
+
+}  // namespace
+}  // namespace flotsam
