@@ -70,7 +70,6 @@ void Simulation::initialize() {
     jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids, case_.bridges);
     add_deck_faces(walls_, jam_geometry_.bridges, jam_geometry_.group_names);
     has_decks_ = !walls_.band_lower.empty();
-    check_decks_stand_above_the_bed();
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
         !jam_geometry_.bridges.empty()) {
       reference_flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
@@ -78,6 +77,12 @@ void Simulation::initialize() {
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }
   }
+  // The case's bridges stand on the mesh, and their decks above the bed, with or without bodies
+  // (a deck shapes the flow either way).
+  if (!has_bodies_ && !case_.bridges.empty())
+    jam_geometry_ = jam_geometry_for(
+        case_.mesh, mesh_, solid_group_indices(mesh_, case_.flow.boundaries), case_.bridges);
+  check_decks_stand_above_the_bed();
   next_output_ = time_;
   if (options_.restart) {
     read_checkpoint(checkpoint.string());

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
@@ -38,13 +39,14 @@ struct Outcome {
   JamStatistics jams;       // at the end; its last solid is the deck's face
 };
 
-Outcome run_towards_deck(const BodySpec& body, double soffit, double top) {
+/// The flume with its footbridge and `bodies` (none, or the one body).
+Case flume_with_deck(const std::vector<BodySpec>& bodies, double soffit, double top) {
   Case c = test::straight_channel_case("deck", 20.0, 2.0);  // 20 m^3/s over 20 m x 2 m: 0.5 m/s
   c.flow.engine = FlowEngineKind::fv;
   c.flow.initial_u = Expression("0.5", "the flume's current");
   c.time = {.end = 50.0, .step = 0.5, .mode = CouplingMode::one_way};
   c.output.interval = 50.0;
-  c.bodies.bodies = {body};
+  c.bodies.bodies = bodies;
   c.bodies.contact.restitution = 0.0;  // it comes to rest against the face, not bouncing off
   c.bridges = {{.name = "footbridge",
                 .start = Vec2(100.0, -1.0),
@@ -57,6 +59,11 @@ Outcome run_towards_deck(const BodySpec& body, double soffit, double top) {
                                    .railing_open = true},
                 .backwater_distance = 0.0,
                 .origin = "test"}};
+  return c;
+}
+
+Outcome run_towards_deck(const BodySpec& body, double soffit, double top) {
+  const Case c = flume_with_deck({body}, soffit, top);
   Simulation s(
       c, make_rectangle_mesh({.length = 200, .width = 20, .nx = 100, .ny = 10}),
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
@@ -133,6 +140,14 @@ TEST(DeckStopsWhatFloats, ACarStopsAgainstTheFace) {
   EXPECT_LE(o.front_max, face_x + 0.01 * 1.8);
   EXPECT_GE(o.front_min, face_x - 0.2);
   EXPECT_GE(o.trapped_at_deck, 8);
+}
+
+TEST(DeckStopsWhatFloats, ADeckBelowTheBedIsRefusedEvenWithoutBodies) {
+  Simulation s(
+      flume_with_deck({}, -2.0, -1.0),
+      make_rectangle_mesh({.length = 200, .width = 20, .nx = 100, .ny = 10}),
+      {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
+  EXPECT_THROW(s.initialize(), InputError);
 }
 
 TEST(DeckStopsWhatFloats, ADeckBelowTheBedIsRefusedNamingTheBridge) {
