@@ -3,7 +3,6 @@
 // river from its right bank to its left bank (looking downstream, so that downstream is on the
 // axis' right), and the piers it stands on. The bridge on the mesh (gaps, reach, sections) is
 // bridges/bridge.hpp; building one from this is bridges/bridge_layout.hpp.
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +23,8 @@ struct DeckConfig {
 
   /// [m] z of the highest point that stops a floating body: the railing's top.
   double obstacle_top() const { return top + railing_height; }
+  /// [m] z of what the water overtops: the top, or a solid railing's top.
+  double crest() const { return railing_open ? top : obstacle_top(); }
 };
 
 struct BridgeConfig {
@@ -38,6 +39,10 @@ struct BridgeConfig {
   double backwater_distance = 0.0;  // [m] upstream of the axis; 0: twice the structure's reach
                                     // (two diameters of its widest pier without a deck)
   std::string origin;  // "case.yaml:40: bridges[0]" or "town.gpkg, layer 'bridges', feature 1"
+
+  /// The unit vector from start to end, and downstream: it turned a quarter turn clockwise.
+  Vec2 along() const { return (end - start).normalized(); }
+  Vec2 downstream() const { return {along().y(), -along().x()}; }
 };
 
 }  // namespace flotsam

@@ -121,11 +121,12 @@ std::vector<Crossing> axis_crossings(const Bridge& bridge, const Mesh& mesh) {
   return crossings;
 }
 
-/// The largest distance from the axis of a node on the boundary of `group` [m].
-double reach_of(const Bridge& bridge, const Mesh& mesh, int group) {
+/// The largest distance from the axis of a node on the boundary of the groups marked in
+/// `pier_group` [m].
+double reach_of(const Bridge& bridge, const Mesh& mesh, const std::vector<char>& pier_group) {
   double reach = 0.0;
   for (const BoundaryEdge& edge : mesh.boundary) {
-    if (edge.group != group) continue;
+    if (!pier_group[edge.group]) continue;
     for (const int n : mesh.edge_nodes(edge.element, edge.local_edge))
       reach = std::max(reach, std::abs(bridge.downstream.dot(mesh.nodes[n] - bridge.start)));
   }
@@ -138,8 +139,8 @@ Bridge bridge_on_mesh(const BridgeConfig& config, const Mesh& mesh,
   bridge.name = config.name;
   bridge.start = config.start;
   bridge.end = config.end;
-  bridge.along = (config.end - config.start).normalized();
-  bridge.downstream = Vec2(bridge.along.y(), -bridge.along.x());
+  bridge.along = config.along();
+  bridge.downstream = config.downstream();
   const auto solid = [&](int group) {
     return group >= 0 && group < static_cast<int>(solid_of_group.size()) ? solid_of_group[group]
                                                                          : -1;
@@ -161,11 +162,18 @@ Bridge bridge_on_mesh(const BridgeConfig& config, const Mesh& mesh,
         config.origin, config.name, config.start.x(), config.start.y(), config.end.x(),
         config.end.y(), mesh.source);
   // Piers: the obstacles between two gaps, then the groups the case names.
-  std::vector<int> pier_groups;
-  for (std::size_t k = 1; k < bridge.gaps.size(); ++k)
-    for (const int s : {bridge.gaps[k - 1].upper_solid, bridge.gaps[k].lower_solid})
-      if (s >= 0 && std::find(bridge.piers.begin(), bridge.piers.end(), s) == bridge.piers.end())
-        bridge.piers.push_back(s);
+  const auto add_pier = [&](int s) {
+    if (s >= 0 && std::find(bridge.piers.begin(), bridge.piers.end(), s) == bridge.piers.end())
+      bridge.piers.push_back(s);
+  };
+  for (std::size_t k = 1; k < bridge.gaps.size(); ++k) {
+    add_pier(bridge.gaps[k - 1].upper_solid);
+    add_pier(bridge.gaps[k].lower_solid);
+  }
+  std::vector<char> pier_group(mesh.group_names.size(), 0);
+  for (std::size_t g = 0; g < pier_group.size(); ++g)
+    pier_group[g] = std::find(bridge.piers.begin(), bridge.piers.end(),
+                              solid(static_cast<int>(g))) != bridge.piers.end();
   for (const std::string& name : config.pier_groups) {
     const int group = mesh.find_group(name);
     if (group < 0)
@@ -178,18 +186,10 @@ Bridge bridge_on_mesh(const BridgeConfig& config, const Mesh& mesh,
           "axis must pass through every pier of the bridge",
           config.origin, config.name, name, config.start.x(), config.start.y(), config.end.x(),
           config.end.y());
-    pier_groups.push_back(group);
-    const int s = solid(group);
-    if (s >= 0 && std::find(bridge.piers.begin(), bridge.piers.end(), s) == bridge.piers.end())
-      bridge.piers.push_back(s);
+    pier_group[group] = 1;
+    add_pier(solid(group));
   }
-  for (std::size_t g = 0; g < solid_of_group.size(); ++g)
-    if (std::find(bridge.piers.begin(), bridge.piers.end(), solid_of_group[g]) !=
-            bridge.piers.end() &&
-        solid_of_group[g] >= 0)
-      pier_groups.push_back(static_cast<int>(g));
-  for (const int group : pier_groups)
-    bridge.reach = std::max(bridge.reach, reach_of(bridge, mesh, group));
+  bridge.reach = reach_of(bridge, mesh, pier_group);
   bridge.deck = config.deck;
   if (bridge.deck) bridge.reach = std::max(bridge.reach, 0.5 * bridge.deck->width);
   bridge.backwater_distance =

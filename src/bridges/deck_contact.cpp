@@ -34,10 +34,9 @@ BodyLevels body_levels(const BodySet& bodies, const FlowField& flow, double t) {
   return levels;
 }
 
-AxisWater water_on_axis(const Bridge& bridge, const FlowField& flow, double t, int samples) {
-  constexpr double infinity = std::numeric_limits<double>::infinity();
-  AxisWater water{infinity, -infinity};
-  double open = 0.0;  // [m] the gaps' total width
+double lowest_bed_on_axis(const Bridge& bridge, const FlowField& flow, double t, int samples) {
+  double lowest = std::numeric_limits<double>::infinity();  // [m]
+  double open = 0.0;                                        // [m] the gaps' total width
   for (const Gap& gap : bridge.gaps) open += gap.width();
   int hint = -1;
   for (const Gap& gap : bridge.gaps) {
@@ -45,12 +44,10 @@ AxisWater water_on_axis(const Bridge& bridge, const FlowField& flow, double t, i
     for (int k = 0; k < n; ++k) {
       const double s = gap.lower + (k + 0.5) / n * gap.width();  // [m]
       const FlowSample w = flow.sample(bridge.start + s * bridge.along, t, hint);
-      if (!w.inside) continue;
-      water.lowest_bed = std::min(water.lowest_bed, w.eta - w.H);
-      if (w.H > 0.0) water.highest_surface = std::max(water.highest_surface, w.eta);
+      if (w.inside) lowest = std::min(lowest, w.eta - w.H);
     }
   }
-  return water;
+  return lowest;
 }
 
 }  // namespace flotsam

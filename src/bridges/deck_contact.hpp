@@ -27,12 +27,8 @@ struct BodyLevels {
 };
 BodyLevels body_levels(const BodySet& bodies, const FlowField& flow, double t);
 
-/// The lowest bed and the highest wet surface [m] at `samples` points spread evenly over the
-/// bridge's gaps (midpoint rule), at time t; the highest surface is -infinity where all is dry.
-struct AxisWater {
-  double lowest_bed = 0.0;
-  double highest_surface = 0.0;
-};
-AxisWater water_on_axis(const Bridge& bridge, const FlowField& flow, double t, int samples = 100);
+/// The lowest bed [m] at `samples` points spread evenly over the bridge's gaps (midpoint rule),
+/// as the flow holds it at time t (z_b = eta - H).
+double lowest_bed_on_axis(const Bridge& bridge, const FlowField& flow, double t, int samples = 100);
 
 }  // namespace flotsam

@@ -107,15 +107,6 @@ int JamStatistics::largest_jam() const {
   return largest;
 }
 
-Vec2 footprint_half_extent(const BodySet& bodies, int i) {
-  // The rectangle's corners are G +- (L/2) a +- (l/2) perp(a), a = (cos theta, sin theta):
-  // their largest |x - x_G| is (L/2)|cos| + (l/2)|sin|, their largest |y - y_G| is
-  // (L/2)|sin| + (l/2)|cos|.
-  const double c = std::abs(std::cos(bodies.angle[i])), s = std::abs(std::sin(bodies.angle[i]));
-  const Vec2 h = bodies.half_extents(i);
-  return {h.x() * c + h.y() * s, h.x() * s + h.y() * c};
-}
-
 double covered_length(std::vector<std::pair<double, double>> intervals, double lower,
                       double upper) {
   // Clip to [lower, upper], sort by start, merge overlapping runs and add their lengths.
@@ -140,6 +131,18 @@ double covered_length(std::vector<std::pair<double, double>> intervals, double l
   }
   if (in_run) covered += run_hi - run_lo;
   return covered;
+}
+
+std::vector<std::pair<double, double>> axis_spans(const BodySet& bodies,
+                                                  const std::vector<int>& members,
+                                                  const Bridge& bridge) {
+  std::vector<std::pair<double, double>> spans;
+  for (const int i : members) {
+    const double s = bridge.along_of(bodies.position[i]);
+    const double h = footprint_half_extent_along(bodies, i, bridge.along);
+    spans.emplace_back(s - h, s + h);
+  }
+  return spans;
 }
 
 namespace {
@@ -202,19 +205,6 @@ int bridge_of(const Jam& jam, const BodySet& bodies, const JamGeometry& geometry
     if (best < 0 || distance < best_distance) best = b, best_distance = distance;
   }
   return best;
-}
-
-/// The intervals along a bridge's axis of the footprints of `members` [m].
-std::vector<std::pair<double, double>> axis_spans(const BodySet& bodies,
-                                                  const std::vector<int>& members,
-                                                  const Bridge& bridge) {
-  std::vector<std::pair<double, double>> spans;
-  for (const int i : members) {
-    const double s = bridge.along_of(bodies.position[i]);
-    const double h = footprint_half_extent_along(bodies, i, bridge.along);
-    spans.emplace_back(s - h, s + h);
-  }
-  return spans;
 }
 
 /// Fills each jam's bridge and gap blockage, and each bridge's total blockage: the union of the

@@ -101,8 +101,11 @@ JamStatistics compute_jam_statistics(const BodySet& bodies, const ContactReport&
 /// Length of [lower, upper] covered by the union of `intervals` (each (lo, hi) [m]) [m].
 double covered_length(std::vector<std::pair<double, double>> intervals, double lower, double upper);
 
-/// Half the extent of body i's footprint (rotated rectangle) along x and along y [m].
-Vec2 footprint_half_extent(const BodySet& bodies, int i);
+/// The intervals [s_G - h_s, s_G + h_s] along `bridge`'s axis of the footprints of `members`
+/// [m] (h_s: footprint_half_extent_along the axis).
+std::vector<std::pair<double, double>> axis_spans(const BodySet& bodies,
+                                                  const std::vector<int>& members,
+                                                  const Bridge& bridge);
 
 /// `<name>_jams.csv` (docs/output-format.md): one row per output time. The backwater columns
 /// are there only when the run has a reference flow without bodies (`with_backwater`).

@@ -50,6 +50,12 @@ void Simulation::initialize() {
         std::find(outflow_groups_.begin(), outflow_groups_.end(), g) == outflow_groups_.end())
       outflow_groups_.push_back(g);
   }
+  // The bridges stand on the mesh, with or without bodies (a deck shapes the flow either way).
+  std::vector<int> solids;  // the wall groups
+  if (has_bodies_ || !case_.bridges.empty()) {
+    solids = solid_group_indices(mesh_, case_.flow.boundaries);
+    jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids, case_.bridges);
+  }
   if (has_bodies_) {
     bodies_.water_density = case_.flow.water_density;
     const PlacementCheck check{case_.file};
@@ -65,9 +71,7 @@ void Simulation::initialize() {
         std::make_unique<BodyIntegrator>(make_force_model(case_.bodies.physics, case_.flow));
     contacts_ = std::make_unique<ContactWorld>(case_.bodies.contact,
                                                case_.bodies.physics.added_mass_coefficient);
-    const std::vector<int> solids = solid_group_indices(mesh_, case_.flow.boundaries);
     walls_ = extract_boundary_segments(mesh_, solids);
-    jam_geometry_ = jam_geometry_for(case_.mesh, mesh_, solids, case_.bridges);
     add_deck_faces(walls_, jam_geometry_.bridges, jam_geometry_.group_names);
     has_decks_ = !walls_.band_lower.empty();
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
@@ -77,11 +81,6 @@ void Simulation::initialize() {
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }
   }
-  // The case's bridges stand on the mesh, and their decks above the bed, with or without bodies
-  // (a deck shapes the flow either way).
-  if (!has_bodies_ && !case_.bridges.empty())
-    jam_geometry_ = jam_geometry_for(
-        case_.mesh, mesh_, solid_group_indices(mesh_, case_.flow.boundaries), case_.bridges);
   check_decks_stand_above_the_bed();
   next_output_ = time_;
   if (options_.restart) {
@@ -212,7 +211,7 @@ void Simulation::check_decks_stand_above_the_bed() const {
   for (std::size_t b = 0; b < jam_geometry_.bridges.size(); ++b) {
     const Bridge& bridge = jam_geometry_.bridges[b];
     if (!bridge.deck) continue;
-    const double bed = water_on_axis(bridge, flow_->field(), time_).lowest_bed;  // [m]
+    const double bed = lowest_bed_on_axis(bridge, flow_->field(), time_);  // [m]
     if (bridge.deck->top <= bed)
       throw_input_error(
           "{}: bridge '{}': its deck's top ({} m) is below the bed everywhere along its axis "

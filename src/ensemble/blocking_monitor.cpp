@@ -18,11 +18,8 @@ std::vector<double> gap_cover(const JamStatistics& statistics, const BodySet& bo
   std::vector<std::pair<double, double>> spans;
   for (const Jam& jam : statistics.jams) {
     if (jam.bridge != bridge) continue;
-    for (int i : jam.bodies) {
-      const double s = b.along_of(bodies.position[i]);
-      const double h = footprint_half_extent_along(bodies, i, b.along);
-      spans.emplace_back(s - h, s + h);
-    }
+    const auto jam_spans = axis_spans(bodies, jam.bodies, b);
+    spans.insert(spans.end(), jam_spans.begin(), jam_spans.end());
   }
   std::vector<double> cover;
   for (const Gap& gap : b.gaps)

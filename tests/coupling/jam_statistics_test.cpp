@@ -166,9 +166,10 @@ TEST(FootprintHalfExtent, RotatedRectangleProjectsOnBothAxes) {
   BodySet bodies;
   add_log(bodies, 0.0, 0.0, pi / 6.0, 20.0);
   // (L/2)|cos| + (l/2)|sin| = 10 sqrt(3)/2 + 0.25, (L/2)|sin| + (l/2)|cos| = 5 + sqrt(3)/4.
-  const Vec2 h = footprint_half_extent(bodies, 0);
-  EXPECT_NEAR(h.x(), 5.0 * std::sqrt(3.0) + 0.25, tolerance);
-  EXPECT_NEAR(h.y(), 5.0 + std::sqrt(3.0) / 4.0, tolerance);
+  EXPECT_NEAR(footprint_half_extent_along(bodies, 0, Vec2::UnitX()), 5.0 * std::sqrt(3.0) + 0.25,
+              tolerance);
+  EXPECT_NEAR(footprint_half_extent_along(bodies, 0, Vec2::UnitY()), 5.0 + std::sqrt(3.0) / 4.0,
+              tolerance);
 }
 
 // Three logs against the upstream face of pier_1: two across the flow spanning y in

@@ -15,12 +15,19 @@ namespace {
 
 using ::testing::HasSubstr;
 
+/// The description of a run called `name` on a 10 m x 4 m rectangle of 5 x 2 squares, every
+/// boundary group open (1) or a wall (0).
+RunDescription small_run(const std::string& name, std::uint8_t open) {
+  RunDescription run;
+  run.name = name;
+  run.mesh = make_rectangle_mesh({.length = 10, .width = 4, .nx = 5, .ny = 2});
+  run.open_group.assign(run.mesh.group_names.size(), open);
+  return run;
+}
+
 TEST(RunPictures, AStateFileOfAnotherRunIsRefusedNamingTheFile) {
   const auto dir = test::fresh_test_folder("flotsam_run_pictures_test");
-  RunDescription run;
-  run.name = "small";
-  run.mesh = make_rectangle_mesh({.length = 10, .width = 4, .nx = 5, .ny = 2});
-  run.open_group.assign(run.mesh.group_names.size(), 0);
+  const RunDescription run = small_run("small", 0);
   write_run_description((dir / "run.bin").string(), run);
   const Mesh other = make_rectangle_mesh({.length = 10, .width = 4, .nx = 6, .ny = 2});
   const auto n = static_cast<std::size_t>(other.node_count());
@@ -41,10 +48,7 @@ TEST(RunPictures, AStateFileOfAnotherRunIsRefusedNamingTheFile) {
 
 TEST(RunDescription, DecksRoundTripAndARunWithoutThemReadsAsBefore) {
   const auto dir = test::fresh_test_folder("flotsam_run_description_decks");
-  RunDescription run;
-  run.name = "bridge";
-  run.mesh = make_rectangle_mesh({.length = 10, .width = 4, .nx = 5, .ny = 2});
-  run.open_group.assign(run.mesh.group_names.size(), 1);
+  RunDescription run = small_run("bridge", 1);
   write_run_description((dir / "plain.bin").string(), run);
   run.decks = {{Vec2(4, -1), Vec2(4, 5), Vec2(6, 5), Vec2(6, -1)}};
   write_run_description((dir / "deck.bin").string(), run);

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "../support/bridge_across.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -48,17 +49,7 @@ Case flume_with_deck(const std::vector<BodySpec>& bodies, double soffit, double 
   c.output.interval = 50.0;
   c.bodies.bodies = bodies;
   c.bodies.contact.restitution = 0.0;  // it comes to rest against the face, not bouncing off
-  c.bridges = {{.name = "footbridge",
-                .start = Vec2(100.0, -1.0),
-                .end = Vec2(100.0, 21.0),
-                .pier_groups = {},
-                .deck = DeckConfig{.soffit = soffit,
-                                   .top = top,
-                                   .width = 4.0,
-                                   .railing_height = 0.0,
-                                   .railing_open = true},
-                .backwater_distance = 0.0,
-                .origin = "test"}};
+  c.bridges = {test::bridge_across("footbridge", 100.0, 20.0, test::plain_deck(soffit, top, 4.0))};
   return c;
 }
 
@@ -72,7 +63,7 @@ Outcome run_towards_deck(const BodySpec& body, double soffit, double top) {
   const BodySet& b = s.bodies();
   while (!s.done()) {
     s.step();
-    o.front = b.position[0].x() + footprint_half_extent(b, 0).x();
+    o.front = b.position[0].x() + footprint_half_extent_along(b, 0, Vec2::UnitX());
     if (s.time() <= c.time.end - 10.0) continue;
     o.front_min = std::min(o.front_min, o.front);
     o.front_max = std::max(o.front_max, o.front);

@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/bridge_across.hpp"
 #include "../support/fv_cases.hpp"
 #include "mesh/mesh_generator.hpp"
 
@@ -45,17 +46,7 @@ Case flume(double q, double soffit, double top) {
   c.bed.kind = BedConfig::Kind::expression;
   c.bed.expression = Expression("x <= 50 ? 0 : -1", "the flume's drop");
   c.flow.initial_eta = Expression("x <= 50 ? 0.5 : -0.9", "still water");
-  c.bridges = {{.name = "deck",
-                .start = Vec2(axis_x, -1.0),
-                .end = Vec2(axis_x, width + 1.0),
-                .pier_groups = {},
-                .deck = DeckConfig{.soffit = soffit,
-                                   .top = top,
-                                   .width = 6.0,
-                                   .railing_height = 0.0,
-                                   .railing_open = true},
-                .backwater_distance = 0.0,
-                .origin = "test"}};
+  c.bridges = {test::bridge_across("deck", axis_x, width, test::plain_deck(soffit, top, 6.0))};
   return c;
 }
 
@@ -187,17 +178,7 @@ TEST(DeckHydraulics, ALakeAtRestUnderAndAroundASubmergedDeckStaysAtRest) {
   c.bed.kind = BedConfig::Kind::expression;
   c.bed.expression = Expression("0.2 * sin(x / 7) + 0.1 * cos(y * 2)", "a wavy bed");
   c.flow.initial_eta_start = c.flow.initial_eta_end = 1.0;
-  c.bridges = {{.name = "deck",
-                .start = Vec2(axis_x, -1.0),
-                .end = Vec2(axis_x, width + 1.0),
-                .pier_groups = {},
-                .deck = DeckConfig{.soffit = 0.6,
-                                   .top = 0.9,
-                                   .width = 6.0,
-                                   .railing_height = 0.0,
-                                   .railing_open = true},
-                .backwater_distance = 0.0,
-                .origin = "test"}};
+  c.bridges = {test::bridge_across("deck", axis_x, width, test::plain_deck(0.6, 0.9, 6.0))};
   const Mesh mesh = flume_mesh(2);
   FvEngine engine(mesh, c);
   engine.initialize();
@@ -238,16 +219,10 @@ TEST(DeckHydraulics, OnAGmshMeshTurnedAcrossTheAxisTheGateStillHolds) {
   // mean of its corners) and so the deck's opening measured from them.
   f.bed.expression = Expression(along + " <= 52 ? 0 : -1", "the turned flume's drop");
   f.flow.initial_eta = Expression(along + " <= 52 ? 0.5 : -0.9", "still water");
-  f.bridges = {
-      {.name = "deck",
-       .start = world(axis_x, -1.0),
-       .end = world(axis_x, width + 1.0),
-       .pier_groups = {},
-       .deck =
-           DeckConfig{
-               .soffit = a, .top = 5.0, .width = 6.0, .railing_height = 0.0, .railing_open = true},
-       .backwater_distance = 0.0,
-       .origin = "test"}};
+  BridgeConfig deck = test::bridge_across("deck", axis_x, width, test::plain_deck(a, 5.0, 6.0));
+  deck.start = world(deck.start.x(), deck.start.y());  // the flume's frame turned
+  deck.end = world(deck.end.x(), deck.end.y());
+  f.bridges = {deck};
   FvEngine engine(mesh, f);
   engine.initialize();
   test::run_to(engine, 400.0, 1.0);

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../support/bridge_across.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
@@ -50,13 +51,7 @@ Case channel_with_raft() {
   raft.angle = pi / 2;
   raft.anchored = true;
   c.bodies.bodies = {raft};
-  c.bridges = {{.name = "bridge",
-                .start = Vec2(150.0, -1.0),
-                .end = Vec2(150.0, width + 1.0),
-                .pier_groups = {},
-                .deck = std::nullopt,
-                .backwater_distance = 20.0,
-                .origin = "test"}};
+  c.bridges = {test::bridge_across("bridge", 150.0, width, std::nullopt, 20.0)};
   return c;
 }
 

@@ -10,11 +10,9 @@ std::vector<DeckEdge> find_deck_edges(const CellMesh& cells,
   std::vector<DeckEdge> found;
   for (const BridgeConfig& bridge : bridges) {
     if (!bridge.deck) continue;
-    const Vec2 along = (bridge.end - bridge.start).normalized();
-    const Vec2 downstream(along.y(), -along.x());
+    const Vec2 along = bridge.along(), downstream = bridge.downstream();
     const double length = (bridge.end - bridge.start).norm();  // [m]
     const DeckConfig& deck = *bridge.deck;
-    const double crest = deck.railing_open ? deck.top : deck.obstacle_top();
     for (int e = 0; e < cells.edge_count; ++e) {
       const int i = cells.left[e], j = cells.right[e];
       if (j < 0) continue;
@@ -24,7 +22,7 @@ std::vector<DeckEdge> find_deck_edges(const CellMesh& cells,
       const int slot = cells.left_slot[e];
       const double s = along.dot(cells.centroid[i] + cells.to_edge[i][slot] - bridge.start);
       if (s < 0.0 || s > length) continue;
-      found.push_back({e, deck.soffit, crest, std::abs(cells.normal[e].dot(downstream))});
+      found.push_back({e, deck.soffit, deck.crest(), std::abs(cells.normal[e].dot(downstream))});
     }
   }
   return found;
