@@ -26,6 +26,7 @@ struct alignas(64) BatchBodies {
   alignas(64) Lanes length;     // L [m]
   alignas(64) Lanes width;      // l [m]
   alignas(64) Lanes draft;      // d [m]
+  alignas(64) Lanes wetted;     // d_w [m], BodySet::wetted_height
   alignas(64) Lanes mass;       // m_p [kg]
   alignas(64) Lanes inertia;    // I_p [kg m^2]
   alignas(64) Lanes d_v;        // equal-volume diameter [m] (P-18)
@@ -44,6 +45,7 @@ struct alignas(64) BatchBodies {
       length[k] = set.length[i];
       width[k] = set.width[i];
       draft[k] = set.draft[i];
+      wetted[k] = set.wetted_height[i];
       mass[k] = set.mass[i];
       inertia[k] = set.inertia[i];
       d_v[k] = set.equal_volume_diameter[i];
@@ -84,8 +86,8 @@ struct alignas(64) BatchDrag {
   const double pressure_centre = model.physics.center_of_pressure ? 1.0 : 0.0;
 #pragma omp simd
   for (int k = 0; k < batch_width; ++k) {
-    const double H = at.H[k], d = b.draft[k];
-    const double h_s = H < 0.0 ? 0.0 : (d < H ? d : H);  // std::clamp(H, 0, d)
+    const double H = at.H[k], d = b.wetted[k];
+    const double h_s = H < 0.0 ? 0.0 : (d < H ? d : H);  // std::clamp(H, 0, d_w)
     const double urx = at.u[k] - y.c[3][k], ury = at.v[k] - y.c[4][k];
     const double speed = std::sqrt(urx * urx + ury * ury);
     const bool acts = at.inside[k] != 0.0 && speed != 0.0 && h_s > 0.0;
@@ -151,7 +153,8 @@ struct alignas(64) BatchLoads {
     const double H = at_G.H[k], d = b.draft[k];
     const bool inside = at_G.inside[k] != 0.0;
     const bool floating = inside & (H > d) & (b.can_float[k] != 0.0);  // & : no branch
-    const double h_s = H < 0.0 ? 0.0 : (d < H ? d : H);
+    const double d_w = b.wetted[k];
+    const double h_s = H < 0.0 ? 0.0 : (d_w < H ? d_w : H);  // (M-8)'s wetted height
     const double m_p = b.mass[k];
     const double m_f = displaced[k];
     const double u = at_G.u[k], v = at_G.v[k];

@@ -98,9 +98,12 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
   // Fluid acceleration and the forces of the water (M-5, M-6, M-7, M-8).
   const Vec2 Du_f_Dt = at_G.du_dt + at_G.grad_u * at_G.u;
   const Vec2 axis = reference ? reference->at(y[2]) : Vec2(std::cos(y[2]), std::sin(y[2]));
-  const Drag drag = drag_on_body(bodies, i, BodyPose{G, axis, u_p, d, at_G, hint}, t, flow, model);
-  const double T_rot = rotation_torque(model.rho, model.physics.rotation_coefficient, h_s,
-                                       bodies.length[i], omega, fluid_spin(at_G.grad_u));
+  const double d_w = bodies.wetted_height[i];
+  const Drag drag =
+      drag_on_body(bodies, i, BodyPose{G, axis, u_p, d_w, at_G, hint}, t, flow, model);
+  const double T_rot =
+      rotation_torque(model.rho, model.physics.rotation_coefficient, std::clamp(at_G.H, 0.0, d_w),
+                      bodies.length[i], omega, fluid_spin(at_G.grad_u));
   const Vec2 F_fluid = (1.0 + C_a) * m_f * Du_f_Dt;
   finish_derivative(bodies, i, model,
                     {u_p, omega, floating, m_f, Du_f_Dt, F_fluid, drag, T_rot, at_G.grad_zb}, dy,

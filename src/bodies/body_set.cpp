@@ -58,6 +58,7 @@ int BodySet::add(const BodySpec& s) {
   mass.push_back(m);
   inertia.push_back(I);
   draft.push_back(floating_draft(s.shape, s.width, b, s.density, water_density));
+  wetted_height.push_back(draft.back());
   // Shape factors of (P-18): the equal-volume sphere d_v = (6 V / pi)^(1/3) and the sphericity
   // Theta = pi d_v^2 / S (surface of that sphere over the body's surface); the centre of
   // pressure's reach at alpha = 0 (M-7).

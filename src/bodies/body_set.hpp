@@ -52,6 +52,8 @@ struct BodySet {
   std::vector<double> pressure_reach;         // 0.1 L (1 - exp(3 (1 - L/l))) [m], (M-7) at 0
 
   // State (hot).
+  std::vector<double> wetted_height;     // d_w [m]: the height the water acts on in (M-6) and
+                                         // (M-8), the draft, or its jam's thickness (M-J1)
   std::vector<Vec2> position;            // x_G [m]
   std::vector<double> angle;             // theta [rad]
   std::vector<Vec2> velocity;            // u_p [m/s]
@@ -100,6 +102,7 @@ struct BodySet {
     f("id", b.id), f("equal_volume_diameter", b.equal_volume_diameter);
     f("sphericity", b.sphericity), f("ganser_K2", b.ganser_K2);
     f("ganser_K1_term", b.ganser_K1_term), f("pressure_reach", b.pressure_reach);
+    f("wetted_height", b.wetted_height);
     f("position", b.position), f("angle", b.angle), f("velocity", b.velocity);
     f("angular_velocity", b.angular_velocity), f("state", b.state), f("anchored", b.anchored);
     f("element_hint", b.element_hint), f("step_size", b.step_size);

@@ -71,7 +71,7 @@ namespace {
 struct Slice {
   Vec2 point;       // slice centre x_k [m]
   Vec2 u_rel;       // u_f(x_k) - u_p [m/s]
-  double h_s;       // wetted height min(d, H(x_k)) [m]
+  double h_s;       // wetted height min(d_w, H(x_k)) [m]
   double fraction;  // 1/N [-]
 };
 
@@ -109,7 +109,7 @@ Drag drag_on_body(const BodySet& bodies, int i, const BodyPose& pose, double t,
                   const FlowField& flow, const ForceModel& model) {
   const int N = std::max(1, model.physics.drag_points);
   if (N == 1) {
-    const double h_s = std::clamp(pose.at_G.H, 0.0, pose.draft);
+    const double h_s = std::clamp(pose.at_G.H, 0.0, pose.wetted);
     return slice_drag(bodies, i, pose, {pose.centre, pose.at_G.u - pose.velocity, h_s, 1.0}, model);
   }
   Drag total;
@@ -120,7 +120,7 @@ Drag drag_on_body(const BodySet& bodies, int i, const BodyPose& pose, double t,
     int hint = pose.hint;
     const FlowSample at_k = flow.sample(x_k, t, hint);
     if (!at_k.inside) continue;  // that part of the body is against a wall: no water there
-    const double h_s = std::clamp(at_k.H, 0.0, pose.draft);
+    const double h_s = std::clamp(at_k.H, 0.0, pose.wetted);
     const Drag d = slice_drag(bodies, i, pose, {x_k, at_k.u - pose.velocity, h_s, 1.0 / N}, model);
     total.force += d.force;
     total.torque += d.torque;

@@ -67,7 +67,7 @@ struct BodyPose {
   Vec2 centre;      // x_G [m]
   Vec2 axis;        // unit vector along the long axis [-]
   Vec2 velocity;    // u_p [m/s]
-  double draft;     // d [m]
+  double wetted;    // d_w [m], the height the water acts on (BodySet::wetted_height)
   FlowSample at_G;  // the flow at G
   int hint;         // element of G (start of the walks for the drag points)
 };

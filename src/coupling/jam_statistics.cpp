@@ -294,9 +294,15 @@ JamStatistics compute_jam_statistics(const BodySet& bodies, const ContactReport&
       jam = static_cast<int>(stats.jams.size());
       std::sort(anchors.begin(), anchors.end());
       anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
-      stats.jams.push_back({.bodies = {}, .anchors = anchors, .bridge = -1, .gap_blockage = {}});
+      stats.jams.push_back({.bodies = {},
+                            .anchors = anchors,
+                            .bridge = -1,
+                            .gap_blockage = {},
+                            .thickness = 0.0,
+                            .gap_opening_closed = {}});
     }
     stats.jams[jam].bodies.push_back(i);
+    stats.jams[jam].thickness = std::max(stats.jams[jam].thickness, bodies.wetted_height[i]);
   }
   for (const Jam& jam : stats.jams)
     for (const int group : jam.anchors) {
@@ -319,6 +325,7 @@ std::vector<std::string> JamStatisticsWriter::columns(const JamGeometry& geometr
   std::vector<std::string> names = {"time [s]",  "released", "passed", "left",       "trapped",
                                     "deposited", "floating", "jams",   "largest jam"};
   for (const Bridge& b : geometry.bridges) names.push_back("blockage " + b.name + " [-]");
+  for (const Bridge& b : geometry.bridges) names.push_back("opening closed " + b.name + " [-]");
   if (with_backwater)
     for (const Bridge& b : geometry.bridges) names.push_back("backwater rise " + b.name + " [m]");
   for (const SolidGroup& s : geometry.solids) names.push_back("touching " + s.name);
@@ -335,12 +342,13 @@ JamStatisticsWriter::JamStatisticsWriter(const std::string& path, const JamGeome
 void JamStatisticsWriter::write(double t, const JamStatistics& s,
                                 std::span<const double> backwater_rise) {
   const std::size_t expected = with_backwater_ ? bridge_count_ : 0;
-  if (backwater_rise.size() != expected || s.bridge_blockage.size() != bridge_count_)
-    throw std::invalid_argument(
-        fmt::format("JamStatisticsWriter '{}': {} backwater values and {} blockages for {} "
-                    "bridges (backwater columns: {})",
-                    csv_.path(), backwater_rise.size(), s.bridge_blockage.size(), bridge_count_,
-                    with_backwater_));
+  if (backwater_rise.size() != expected || s.bridge_blockage.size() != bridge_count_ ||
+      s.bridge_opening_closed.size() != bridge_count_)
+    throw std::invalid_argument(fmt::format(
+        "JamStatisticsWriter '{}': {} backwater values, {} blockages and {} closed openings for "
+        "{} bridges (backwater columns: {})",
+        csv_.path(), backwater_rise.size(), s.bridge_blockage.size(),
+        s.bridge_opening_closed.size(), bridge_count_, with_backwater_));
   std::vector<double> row = {t,
                              double(s.released),
                              double(s.passed),
@@ -351,6 +359,7 @@ void JamStatisticsWriter::write(double t, const JamStatistics& s,
                              double(s.jams.size()),
                              double(s.largest_jam())};
   row.insert(row.end(), s.bridge_blockage.begin(), s.bridge_blockage.end());
+  row.insert(row.end(), s.bridge_opening_closed.begin(), s.bridge_opening_closed.end());
   row.insert(row.end(), backwater_rise.begin(), backwater_rise.end());
   for (const int c : s.touching) row.push_back(c);
   for (const int c : s.anchored) row.push_back(c);
@@ -377,30 +386,33 @@ std::string format_jam_summary(const JamStatistics& s, const JamGeometry& geomet
   append_line(out, "bodies: {} released, {} passed, {} left, {} trapped, {} deposited, {} floating",
               s.released, s.passed, s.left, s.trapped, s.deposited, s.floating);
   if (!geometry.bridges.empty()) {
-    append_line(out, "  {:<{}} {:>24} {:>5} {:>9}{}", "bridge", bridge_width,
-                "axis centre (x, y) [m]", "gaps", "blockage",
+    append_line(out, "  {:<{}} {:>24} {:>5} {:>9} {:>14}{}", "bridge", bridge_width,
+                "axis centre (x, y) [m]", "gaps", "blockage", "opening closed",
                 backwater_rise.empty() ? "" : "  backwater rise [m]");
     for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
       const Bridge& bridge = geometry.bridges[b];
       const Vec2 centre = 0.5 * (bridge.start + bridge.end);
       const std::string rise =
           b < backwater_rise.size() ? fmt::format("  {:>18.4f}", backwater_rise[b]) : "";
-      append_line(out, "  {:<{}} {:>24} {:>5} {:>9.3f}{}", bridge.name, bridge_width,
+      const std::string closed = b < s.bridge_opening_closed.size()
+                                     ? fmt::format("{:.3f}", s.bridge_opening_closed[b])
+                                     : "-";
+      append_line(out, "  {:<{}} {:>24} {:>5} {:>9.3f} {:>14}{}", bridge.name, bridge_width,
                   fmt::format("({:.1f}, {:.1f})", centre.x(), centre.y()), bridge.gaps.size(),
-                  s.bridge_blockage.at(b), rise);
+                  s.bridge_blockage.at(b), closed, rise);
     }
   }
   append_line(out, "  {} jam{}, largest {} bodies", s.jams.size(), s.jams.size() == 1 ? "" : "s",
               s.largest_jam());
   if (!s.jams.empty()) {
-    append_line(out, "  {:<4} {:>6}  {:<24} {:<{}} {}", "jam", "bodies", "anchored on", "bridge",
-                bridge_width, "gap blockage");
+    append_line(out, "  {:<4} {:>6} {:>13}  {:<24} {:<{}} {}", "jam", "bodies", "thickness [m]",
+                "anchored on", "bridge", bridge_width, "gap blockage");
     for (std::size_t j = 0; j < s.jams.size(); ++j) {
       const Jam& jam = s.jams[j];
       std::vector<std::string> anchors;
       for (const int g : jam.anchors) anchors.push_back(geometry.group_names.at(g));
-      append_line(out, "  {:<4} {:>6}  {:<24} {:<{}} {}", j + 1, jam.body_count(),
-                  fmt::format("{}", fmt::join(anchors, ", ")),
+      append_line(out, "  {:<4} {:>6} {:>13.3f}  {:<24} {:<{}} {}", j + 1, jam.body_count(),
+                  jam.thickness, fmt::format("{}", fmt::join(anchors, ", ")),
                   jam.bridge >= 0 ? geometry.bridges[jam.bridge].name : std::string("-"),
                   bridge_width, fmt::format("{:.3f}", fmt::join(jam.gap_blockage, " ")));
     }

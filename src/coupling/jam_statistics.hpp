@@ -76,6 +76,10 @@ struct Jam {
   std::vector<int> anchors;          // boundary groups touched (group_names indices), ascending
   int bridge = -1;                   // the bridge it sits at, -1: none
   std::vector<double> gap_blockage;  // [-] per gap of that bridge (empty when bridge = -1)
+  double thickness = 0.0;            // [m] its vertical extent: its bodies' largest wetted
+                                     // height (their draft, or (M-J1); coupling/jam_extent.hpp)
+  std::vector<double> gap_opening_closed;  // [-] per gap: share of the opening's area closed
+                                           // (measure_opening_closure; empty until measured)
   int body_count() const { return static_cast<int>(bodies.size()); }
 };
 
@@ -84,7 +88,9 @@ struct JamStatistics {
   std::vector<int> anchored;            // per JamGeometry::solids: bodies in jams anchored on it
   std::vector<Jam> jams;                // ordered by their smallest body index
   std::vector<double> bridge_blockage;  // [-] per bridge: covered span over total gap width
-  int released = 0;                     // bodies in the set (every body released so far)
+  std::vector<double> bridge_opening_closed;  // [-] per bridge: closed share of the openings'
+                                              // area (measure_opening_closure; else empty)
+  int released = 0;                           // bodies in the set (every body released so far)
   int passed = 0;           // G beyond every bridge (gone or not); no bridges: gone bodies
   int left = 0;             // BodySet::outflow_count: gone through an outflow boundary
   int trapped = 0;          // in a jam
@@ -121,8 +127,8 @@ class JamStatisticsWriter {
              std::span<const double> backwater_rise = {});
 
   /// The header: time [s], released, passed, left, trapped, deposited, floating, jams,
-  /// largest jam, blockage <bridge> [-]..., backwater rise <bridge> [m]..., touching <group>...,
-  /// anchored <group>...
+  /// largest jam, blockage <bridge> [-]..., opening closed <bridge> [-]..., backwater rise <bridge>
+  /// [m]..., touching <group>..., anchored <group>...
   static std::vector<std::string> columns(const JamGeometry& geometry, bool with_backwater);
 
  private:
@@ -131,8 +137,9 @@ class JamStatisticsWriter {
   std::size_t bridge_count_;
 };
 
-/// The end-of-run summary: the counts, one line per bridge (axis centre, gaps, blockage, backwater
-/// rise when `backwater_rise` is given), one per jam and one per solid group, in aligned columns.
+/// The end-of-run summary: the counts, one line per bridge (axis centre, gaps, blockage, share of
+/// the opening closed, backwater rise when `backwater_rise` is given), one per jam (with its
+/// thickness) and one per solid group, in aligned columns.
 std::string format_jam_summary(const JamStatistics& statistics, const JamGeometry& geometry,
                                std::span<const double> backwater_rise = {});
 

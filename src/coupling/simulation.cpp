@@ -10,6 +10,7 @@
 #include "bridges/deck_contact.hpp"
 #include "core/error.hpp"
 #include "coupling/flow_engines.hpp"
+#include "coupling/jam_extent.hpp"
 #include "coupling/placement_overlap.hpp"
 #include "coupling/progress.hpp"
 #include "io/case_file.hpp"
@@ -197,6 +198,11 @@ void Simulation::advance_bodies(double t0, double t1) {
   integration_totals_.contact_intervals =
       std::max(integration_totals_.contact_intervals, stats.contact_intervals);
 
+  if (case_.bodies.jams.vertical_extent == JamExtent::accumulation) {  // (M-J1), jam_extent.hpp
+    const JamStatistics jams =
+        compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
+    set_wetted_heights(bodies_, jams, jam_geometry_, case_.bodies.jams);
+  }
   const OutflowResult out = remove_outflowing_bodies(bodies_, flow_->field(), t1, outflow_groups_);
   if (!out.stray.empty()) {
     const int i = out.stray.front();
@@ -316,7 +322,16 @@ void Simulation::write_final_output() {
 }
 
 JamStatistics Simulation::jam_statistics() const {
-  return compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
+  JamStatistics statistics =
+      compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
+  const FlowField& flow = flow_->field();
+  int hint = -1;
+  const auto level = [&](const Vec2& p) {
+    const FlowSample f = flow.sample(p, time_, hint);
+    return f.inside ? GapLevel{f.eta, f.eta - f.H} : GapLevel{};  // outside: no opening
+  };
+  measure_opening_closure(statistics, jam_geometry_, gap_levels(jam_geometry_, level));
+  return statistics;
 }
 
 std::vector<double> Simulation::backwater_rise() const {

@@ -226,11 +226,23 @@ struct Release {
   int source_line = 0;  // line of the release in the case file, for messages (0: built in code)
 };
 
+/// How far down a jam at a bridge reaches (docs/model.md "Vertical extent of a jam").
+enum class JamExtent {
+  layer,         // each body acts on the water over its own draft (the paper's floating layer)
+  accumulation,  // a jam at a bridge is a porous accumulation of thickness (M-J1)
+};
+
+struct JamConfig {
+  JamExtent vertical_extent = JamExtent::layer;
+  double porosity = 0.5;  // P [-], voids over the accumulation's bulk volume (accumulation only)
+};
+
 struct BodiesConfig {
   std::vector<BodySpec> bodies;  // given explicitly
   std::vector<Release> releases;
   BodyPhysics physics;
   ContactConfig contact;
+  JamConfig jams;
 };
 
 // ---- output -------------------------------------------------------------------------------

@@ -42,6 +42,18 @@ BodyPhysics read_physics(const YamlMap& m) {
   return p;
 }
 
+JamConfig read_jams(const YamlMap& m) {
+  JamConfig j;
+  if (const auto extent = m.find("vertical_extent"))
+    j.vertical_extent = extent->choice<JamExtent>(
+        {{"layer", JamExtent::layer}, {"accumulation", JamExtent::accumulation}});
+  if (j.vertical_extent == JamExtent::accumulation)
+    j.porosity = m.number("porosity", j.porosity, Range{0.0, 1.0, false, true});
+  else
+    m.forbid("porosity", "only used with vertical_extent 'accumulation'");
+  return j;
+}
+
 // Each solver's own settings are refused with the other (docs/case-format.md).
 ContactConfig read_contact(const YamlMap& m) {
   ContactConfig c;
@@ -211,6 +223,7 @@ BodiesConfig read_bodies(const YamlMap& m) {
   BodiesConfig bodies;
   bodies.physics = read_physics(m.map("physics"));
   bodies.contact = read_contact(m.map("contact"));
+  bodies.jams = read_jams(m.map("jams"));
   std::map<long, int> id_lines;  // id -> line where given
   if (const auto list = m.find("list")) {
     for (const YamlValue& item : list->list()) {

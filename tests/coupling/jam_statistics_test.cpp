@@ -16,6 +16,7 @@
 #include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "coupling/jam_extent.hpp"
 
 namespace flotsam {
 namespace {
@@ -350,7 +351,9 @@ std::string read_text(const std::filesystem::path& path) {
 TEST(JamStatisticsWriter, HeaderAndRowWithBackwater) {
   const JamGeometry g = paper_geometry();
   const auto report = make_report(3, {{0, 1}, {1, 2}}, {{0, pier_1}});
-  const JamStatistics s = compute_jam_statistics(three_logs_against_pier_1(), report, g);
+  JamStatistics s = compute_jam_statistics(three_logs_against_pier_1(), report, g);
+  // The water 0.25 m deep, less than the logs' draft: the jam closes its covered width.
+  measure_opening_closure(s, g, gap_levels(g, [](const Vec2&) { return GapLevel{0.25, 0.0}; }));
   const auto path = test::scratch_path("flotsam_jam_writer_test_jams.csv");
   {
     JamStatisticsWriter writer(path.string(), g, true);
@@ -361,38 +364,46 @@ TEST(JamStatisticsWriter, HeaderAndRowWithBackwater) {
   EXPECT_EQ(read_text(path),
             "time [s],released,passed,left,trapped,deposited,floating,jams,largest jam,"
             "blockage bridge_1 [-],blockage bridge_2 [-],"
+            "opening closed bridge_1 [-],opening closed bridge_2 [-],"
             "backwater rise bridge_1 [m],backwater rise bridge_2 [m],"
             "touching bank_right,touching bank_left,touching pier_1,touching pier_2,"
             "touching pier_3,touching pier_4,"
             "anchored bank_right,anchored bank_left,anchored pier_1,anchored pier_2,"
             "anchored pier_3,anchored pier_4\n"
-            "12.5,3,0,0,3,0,0,1,3,0.2,0,0.0125,-0.002,0,0,1,0,0,0,0,0,3,0,0,0\n");
+            "12.5,3,0,0,3,0,0,1,3,0.2,0,0.2,0,0.0125,-0.002,0,0,1,0,0,0,0,0,3,0,0,0\n");
   std::filesystem::remove(path);
 }
 
 TEST(JamStatisticsWriter, WithoutAReferenceFlowTheBackwaterColumnsAreLeftOut) {
   const JamGeometry g = paper_geometry();
   const auto columns = JamStatisticsWriter::columns(g, false);
-  EXPECT_EQ(columns.size(), 9u + 2u + 6u + 6u);
+  EXPECT_EQ(columns.size(), 9u + 2u + 2u + 6u + 6u);
   EXPECT_EQ(columns[10], "blockage bridge_2 [-]");
-  EXPECT_EQ(columns[11], "touching bank_right");
+  EXPECT_EQ(columns[12], "opening closed bridge_2 [-]");
+  EXPECT_EQ(columns[13], "touching bank_right");
 }
 
 TEST(JamSummary, AlignedTableOfBridgesJamsAndGroups) {
   const JamGeometry g = paper_geometry();
   const auto report = make_report(3, {{0, 1}, {1, 2}}, {{0, pier_1}});
-  const JamStatistics s = compute_jam_statistics(three_logs_against_pier_1(), report, g);
+  JamStatistics s = compute_jam_statistics(three_logs_against_pier_1(), report, g);
+  // The water 0.25 m deep, less than the logs' draft: the jam closes its covered width.
+  measure_opening_closure(s, g, gap_levels(g, [](const Vec2&) { return GapLevel{0.25, 0.0}; }));
   const std::vector<double> rise = {0.0125, 0.0};
   const std::string text = format_jam_summary(s, g, rise);
   EXPECT_THAT(text, HasSubstr("bodies: 3 released, 0 passed, 0 left, 3 trapped, 0 deposited, "
                               "0 floating\n"));
   EXPECT_THAT(
       text,
-      HasSubstr("  bridge       axis centre (x, y) [m]  gaps  blockage  backwater rise [m]\n"
-                "  bridge_1              (600.0, 85.0)     3     0.200              0.0125\n"
-                "  bridge_2              (900.0, 85.0)     3     0.000              0.0000\n"));
+      HasSubstr("  bridge       axis centre (x, y) [m]  gaps  blockage opening closed  backwater "
+                "rise [m]\n"
+                "  bridge_1              (600.0, 85.0)     3     0.200          0.200              "
+                "0.0125\n"
+                "  bridge_2              (900.0, 85.0)     3     0.000          0.000              "
+                "0.0000\n"));
   EXPECT_THAT(text, HasSubstr("  1 jam, largest 3 bodies\n"));
-  EXPECT_THAT(text, HasSubstr("  1         3  pier_1                   bridge_1   "
+  // The jam's thickness: the logs' draft, 0.579 m for 1 m logs at 600 kg/m^3 (spec 2).
+  EXPECT_THAT(text, HasSubstr("  1         3         0.579  pier_1                   bridge_1   "
                               "0.000 0.400 0.000\n"));
   EXPECT_THAT(text, HasSubstr("  pier_1              1        3\n"));
 }

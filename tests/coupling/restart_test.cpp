@@ -220,3 +220,63 @@ TEST(Restart, WithoutACheckpointIsAnErrorNamingTheFolder) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A jam held against a deck, as an accumulation (bodies.jams, docs/model.md "Vertical extent of
+// a jam"): the bodies' wetted heights come from the last contact solve and are kept in the
+// checkpoint, so the restarted run goes on bit for bit (finite volumes, the deck's hydraulics).
+Case jam_at_deck_case(double end) {
+  Case c = test::straight_channel_case("deck", 30.0, 2.0);
+  c.flow.engine = FlowEngineKind::fv;
+  c.flow.initial_u = Expression("0.75", "test: flow.initial.u");
+  c.time = {.end = end, .step = 1.0, .mode = CouplingMode::two_way};
+  c.output.interval = 5.0;
+  c.bodies.contact.restitution = 0.0;
+  c.bodies.jams = {.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
+  for (const double x : {24.0, 26.0})
+    for (const double y : {5.0, 15.0}) {
+      BodySpec log;
+      log.length = 9.9;
+      log.width = log.height = 0.6;
+      log.density = 800.0;
+      log.position = Vec2(x, y);
+      log.angle = 1.5707963267948966;
+      c.bodies.bodies.push_back(log);
+    }
+  c.bridges = {{.name = "bridge",
+                .start = Vec2(30.0, -1.0),
+                .end = Vec2(30.0, 21.0),
+                .pier_groups = {},
+                .deck = DeckConfig{.soffit = 2.1, .top = 2.9, .width = 2.0},
+                .backwater_distance = 0.0,
+                .origin = "test"}};
+  return c;
+}
+
+TEST(Restart, AJamAgainstADeckGoesOnWithItsThicknessBitForBit) {
+  const fs::path base = test::fresh_test_folder("restart_deck");
+  const Mesh mesh = make_rectangle_mesh({.length = 100, .width = 20, .nx = 50, .ny = 10});
+  Simulation whole(jam_at_deck_case(30.0), mesh, options_in(base / "whole", false));
+  whole.run();
+  Simulation(jam_at_deck_case(15.0), mesh, options_in(base / "split", false)).run();
+  Simulation rest(jam_at_deck_case(30.0), mesh, options_in(base / "split", true));
+  rest.run();
+  const BodySet &a = whole.bodies(), &b = rest.bodies();
+  ASSERT_EQ(a.size(), 4);
+  int thick = 0;  // bodies acting over more than their draft: in the jam at the deck
+  for (int i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a.position[i], b.position[i]) << "body " << i;
+    EXPECT_EQ(a.velocity[i], b.velocity[i]) << "body " << i;
+    EXPECT_EQ(a.wetted_height[i], b.wetted_height[i]) << "body " << i;
+    thick += a.wetted_height[i] > a.draft[i];
+  }
+  EXPECT_EQ(thick, 4);
+  EXPECT_EQ(rest.flow().eta(), whole.flow().eta());
+  EXPECT_EQ(lines_of(base / "split" / "deck_jams.csv"), lines_of(base / "whole" / "deck_jams.csv"));
+  fs::remove_all(base);
+}
+
+}  // namespace
+}  // namespace flotsam

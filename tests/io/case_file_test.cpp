@@ -1151,3 +1151,29 @@ TEST(CaseFile, BridgesFromALineLayerTakeTheirNamesAxesAndDecks) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// bodies.jams (docs/case-format.md): a layer by default; an accumulation with its porosity in
+// [0, 1); the porosity is refused with a layer, and a porosity of 1 (no wood) is out of range.
+TEST(CaseFile, TheJamsVerticalExtentAndItsPorosityAreRead) {
+  const auto jams = [](const std::string& text) {
+    return parse_case(appended("bodies:\n  jams: " + text + "\n"), "case.yaml").bodies.jams;
+  };
+  EXPECT_EQ(parse_case(base_case, "case.yaml").bodies.jams.vertical_extent, JamExtent::layer);
+  const JamConfig set = jams("{vertical_extent: accumulation, porosity: 0.7}");
+  EXPECT_EQ(set.vertical_extent, JamExtent::accumulation);
+  EXPECT_EQ(set.porosity, 0.7);
+  EXPECT_EQ(jams("{vertical_extent: accumulation}").porosity, 0.5);
+  EXPECT_THAT(error_of(appended("bodies:\n  jams: {porosity: 0.4}\n")),
+              HasSubstr("porosity: not allowed here: only used with vertical_extent "
+                        "'accumulation'"));
+  EXPECT_THAT(error_of(appended("bodies:\n  jams: {vertical_extent: accumulation, porosity: 1}\n")),
+              HasSubstr("porosity"));
+  EXPECT_THAT(error_of(appended("bodies:\n  jams: {vertical_extent: stacked}\n")),
+              HasSubstr("vertical_extent"));
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -1,0 +1,69 @@
+#include "coupling/jam_extent.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flotsam {
+
+double accumulation_thickness(double wood_volume, double covered_width, double porosity) {
+  if (covered_width <= 0.0) return 0.0;
+  return std::sqrt(wood_volume / ((1.0 - porosity) * covered_width));  // (M-J1)
+}
+
+void set_wetted_heights(BodySet& bodies, const JamStatistics& statistics,
+                        const JamGeometry& geometry, const JamConfig& config) {
+  bodies.wetted_height = bodies.draft;
+  if (config.vertical_extent != JamExtent::accumulation) return;
+  for (const Jam& jam : statistics.jams) {
+    if (jam.bridge < 0) continue;
+    const Bridge& bridge = geometry.bridges[jam.bridge];
+    double covered = 0.0;  // w_c [m]
+    for (std::size_t g = 0; g < bridge.gaps.size(); ++g)
+      covered += jam.gap_blockage[g] * bridge.gaps[g].width();
+    double wood = 0.0;  // V_s [m^3]
+    for (const int i : jam.bodies) wood += bodies.submerged_volume(i, bodies.height[i]);
+    const double T = accumulation_thickness(wood, covered, config.porosity);
+    for (const int i : jam.bodies) bodies.wetted_height[i] = std::max(bodies.draft[i], T);
+  }
+}
+
+double opening_height(const GapLevel& level, const Bridge& bridge) {
+  const double soffit =
+      bridge.deck ? bridge.deck->soffit : std::numeric_limits<double>::infinity();  // [m]
+  return std::max(0.0, std::min(level.surface, soffit) - level.bed);
+}
+
+double closed_height(const GapLevel& level, const Bridge& bridge, double thickness) {
+  const double soffit =
+      bridge.deck ? bridge.deck->soffit : std::numeric_limits<double>::infinity();  // [m]
+  const double bottom = std::max(level.bed, level.surface - thickness);
+  return std::max(0.0, std::min(level.surface, soffit) - bottom);
+}
+
+void measure_opening_closure(JamStatistics& stats, const JamGeometry& geometry,
+                             const std::vector<std::vector<GapLevel>>& levels) {
+  std::vector<double> closed(geometry.bridges.size(), 0.0);  // [m^2] per bridge
+  for (Jam& jam : stats.jams) {
+    jam.gap_opening_closed.clear();
+    if (jam.bridge < 0) continue;
+    const Bridge& bridge = geometry.bridges[jam.bridge];
+    for (std::size_t g = 0; g < bridge.gaps.size(); ++g) {
+      const GapLevel& level = levels[jam.bridge][g];
+      const double width = bridge.gaps[g].width(), opening = opening_height(level, bridge);
+      const double area = jam.gap_blockage[g] * width * closed_height(level, bridge, jam.thickness);
+      closed[jam.bridge] += area;
+      jam.gap_opening_closed.push_back(opening > 0.0 ? area / (width * opening) : 0.0);
+    }
+  }
+  stats.bridge_opening_closed.assign(geometry.bridges.size(), 0.0);
+  for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
+    double total = 0.0;  // [m^2]
+    for (std::size_t g = 0; g < geometry.bridges[b].gaps.size(); ++g)
+      total +=
+          geometry.bridges[b].gaps[g].width() * opening_height(levels[b][g], geometry.bridges[b]);
+    stats.bridge_opening_closed[b] = total > 0.0 ? closed[b] / total : 0.0;
+  }
+}
+
+}  // namespace flotsam

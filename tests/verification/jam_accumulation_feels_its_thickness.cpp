@@ -1,0 +1,172 @@
+// Verifies that a jam at a bridge modelled as an accumulation (bodies.jams.vertical_extent:
+// accumulation, docs/model.md "Vertical extent of a jam") reaches the thickness (M-J1), that its
+// bodies act on the water over it, and that the water feels it with the momentum exchanged
+// exactly (finite volumes, two-way). The channel of jam_at_bridge_raises_water_by_momentum.cpp
+// (300 m x 20 m, frictionless, 30 m^3/s at 2 m depth) with a deck across it at x = 150 m (soffit
+// 2.1 m, 0.1 m above the water; 2 m wide) and four free logs 9.9 m long and 0.6 m thick
+// (800 kg/m^3: they draw 0.448 m and stand 0.15 m above the water), released across the flow
+// upstream: they drift against the deck's face and stay there, in jams at the bridge.
+// Checked, for the mean over the last 600 s of 1,200 s (steps of 5 s):
+// - every body of a jam at the bridge acts over (M-J1)'s T for its jam's wood and covered width
+//   (P = 0.5; 1.058 m), more than twice its draft (0.448 m); with `layer`, over its draft;
+// - the reach's momentum balance (Chow 1959, ch. 3) between x = 120 and 180 m equals the force
+//   the logs exchange with the water within 2 % (measured -0.65 %: the water under the deck
+//   flows free, the deck takes no force), and the rise 20 m upstream is within 15 % of the rise
+//   the balance predicts by a 1D reading (measured +11.4 %: behind a jam of two logs abreast the
+//   water at x = 180 m is not uniform across, and its momentum flux is above that of its mean
+//   depth);
+// - the accumulation exchanges more than 1.3 times the force of the same logs as a layer
+//   (measured 1.52). Not 2.46, the ratio of the heights: a body held against the deck is free
+//   between contact solves and gathers speed with the water, and (M-5)'s added-mass reaction
+//   takes its unconstrained acceleration, so the water gets 0.36 (accumulation) and 0.42 (layer)
+//   of the drag the bodies would take at rest (printed; docs/model.md "Vertical extent of a
+//   jam").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "../support/bridge_across.hpp"
+#include "../support/straight_channel.hpp"
+#include "core/constants.hpp"
+#include "coupling/jam_extent.hpp"
+#include "coupling/simulation.hpp"
+#include "mesh/structured_mesh.hpp"
+
+namespace flotsam {
+namespace {
+
+constexpr double length = 300.0, width = 20.0, H0 = 2.0, Q = 30.0;  // [m], [m], [m], [m^3/s]
+constexpr double end_time = 1200.0, averaging_time = 600.0;         // [s]
+constexpr double rho = water_density_default, g = gravity;
+constexpr double porosity = 0.5;  // [-]
+
+Case channel_with_logs(JamExtent extent) {
+  Case c = test::straight_channel_case("accumulation", Q, H0);
+  c.flow.engine = FlowEngineKind::fv;
+  c.flow.viscosity = 1e-6;
+  c.flow.initial_u = Expression("0.75", "test: flow.initial.u");  // Q / (W H0): steady from t = 0
+  c.time = {.end = end_time, .step = 5.0, .mode = CouplingMode::two_way};
+  c.output.backwater = true;
+  c.bodies.physics.drag_law = DragLaw::constant;
+  c.bodies.physics.drag_coefficient = 1.2;
+  c.bodies.contact.restitution = 0.0;  // wood on wood and on concrete
+  c.bodies.jams = {.vertical_extent = extent, .porosity = porosity};
+  for (const double x : {144.0, 146.0})
+    for (const double y : {5.0, 15.0}) {
+      BodySpec log;
+      log.length = 9.9;
+      log.width = log.height = 0.6;
+      log.density = 800.0;
+      log.position = Vec2(x, y);
+      log.angle = pi / 2;
+      c.bodies.bodies.push_back(log);
+    }
+  c.bridges = {test::bridge_across("bridge", 150.0, width, test::plain_deck(2.1, 2.9, 2.0), 20.0)};
+  return c;
+}
+
+/// The depth [m] upstream whose momentum function per width, q^2 / h + g h^2 / 2, exceeds that
+/// of depth h2 by `excess` [m^3/s^2] (the subcritical root, by Newton from h2).
+double depth_upstream(double q, double h2, double excess) {
+  const double target = q * q / h2 + 0.5 * g * h2 * h2 + excess;
+  double h = h2;
+  for (int k = 0; k < 50; ++k)
+    h -= (q * q / h + 0.5 * g * h * h - target) / (g * h - q * q / (h * h));
+  return h;
+}
+
+struct Means {
+  double balance = 0.0, force = 0.0, rise = 0.0, h2 = 0.0;  // [N], [N], [m], [m]
+  double thickness_error = 0.0;  // largest |d_w - T| over the bodies of jams at the bridge [m]
+  double thickness = 0.0;        // smallest T of those jams [m]
+  int jammed = 0;                // bodies in jams at the bridge at the end
+  double draft = 0.0;            // [m] of the logs (all alike)
+  double held_drag = 0.0;  // [N] (M-6) on the bodies at the end were they at rest, for the record
+};
+
+Means run(JamExtent extent) {
+  Simulation s(
+      channel_with_logs(extent),
+      make_rectangle_mesh({.length = length, .width = width, .nx = 100, .ny = 14}),
+      {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
+  s.initialize();
+  const FlowField& flow = s.flow().field();
+  // rho * integral of (h u^2 + g h^2 / 2) dy across x [N] (flat bed at 0: h = eta), and the
+  // section's mean depth [m].
+  const auto section = [&](double x, double& depth) {
+    double sum = 0.0, h_sum = 0.0;
+    const int samples = 200;
+    int hint = -1;
+    for (int k = 0; k < samples; ++k) {
+      const FlowSample f = flow.sample(Vec2(x, width * (k + 0.5) / samples), s.time(), hint);
+      sum += f.H * f.u.x() * f.u.x() + 0.5 * g * f.H * f.H;
+      h_sum += f.H;
+    }
+    depth = h_sum / samples;
+    return rho * sum * width / samples;
+  };
+  Means m;
+  int n = 0;
+  while (!s.done()) {
+    s.step();
+    if (s.time() <= end_time - averaging_time + 1e-9) continue;
+    double d1 = 0.0, d2 = 0.0;
+    m.balance += section(120.0, d1) - section(180.0, d2);
+    m.h2 += d2;
+    for (int i = 0; i < s.bodies().size(); ++i) m.force += s.bodies().reaction_force[i].x();
+    m.rise += s.backwater_rise().at(0);
+    ++n;
+  }
+  m.balance /= n, m.force /= n, m.rise /= n, m.h2 /= n;
+  const BodySet& bodies = s.bodies();
+  m.draft = bodies.draft[0];
+  const JamStatistics jams = s.jam_statistics();
+  m.thickness = std::numeric_limits<double>::infinity();
+  for (const Jam& jam : jams.jams) {
+    if (jam.bridge != 0) continue;
+    double wood = 0.0;  // V_s [m^3]
+    for (const int i : jam.bodies) wood += bodies.submerged_volume(i, bodies.height[i]);
+    const double T = accumulation_thickness(wood, jam.gap_blockage.at(0) * width, porosity);
+    m.thickness = std::min(m.thickness, T);
+    for (const int i : jam.bodies) {
+      const double expected = extent == JamExtent::accumulation ? T : bodies.draft[i];
+      m.thickness_error = std::max(m.thickness_error, std::abs(bodies.wetted_height[i] - expected));
+      ++m.jammed;
+      int hint = -1;
+      const FlowSample f = s.flow().field().sample(bodies.position[i], s.time(), hint);
+      m.held_drag += 0.5 * rho * 1.2 * std::min(bodies.wetted_height[i], f.H) * bodies.length[i] *
+                     std::abs(f.u.x()) * f.u.x();
+    }
+  }
+  return m;
+}
+
+TEST(JamAccumulation, ActsOverItsThicknessAndTheWaterFeelsItWithMomentumExchangedExactly) {
+  const Means acc = run(JamExtent::accumulation);
+  const Means layer = run(JamExtent::layer);
+  const double q = Q / width;  // [m^2/s]
+  const double predicted =
+      depth_upstream(q, acc.h2, acc.force / (rho * width)) - depth_upstream(q, acc.h2, 0.0);
+  const double draft = acc.draft;  // [m] of the logs (spec 2)
+  std::printf(
+      "accumulation: %d bodies jammed, T >= %.3f m (draft %.3f m); momentum: reach %.1f N, "
+      "exchanged %.1f N (%+.2f %%); rise %.4f m, by the balance %.4f m (%+.2f %%); "
+      "layer: exchanged %.1f N, ratio %.3f; exchanged over held drag: %.3f (accumulation), "
+      "%.3f (layer)\n",
+      acc.jammed, acc.thickness, draft, acc.balance, acc.force, 100 * (acc.balance / acc.force - 1),
+      acc.rise, predicted, 100 * (acc.rise / predicted - 1), layer.force, acc.force / layer.force,
+      acc.force / acc.held_drag, layer.force / layer.held_drag);
+  EXPECT_EQ(acc.jammed, 4);
+  EXPECT_EQ(layer.jammed, 4);
+  EXPECT_LT(acc.thickness_error, 1e-12);
+  EXPECT_LT(layer.thickness_error, 1e-12);
+  EXPECT_GT(acc.thickness, 2.0 * draft);
+  EXPECT_NEAR(acc.balance, acc.force, 0.02 * acc.force);
+  EXPECT_NEAR(acc.rise, predicted, 0.15 * predicted);
+  EXPECT_GT(acc.force, 1.3 * layer.force);
+}
+
+}  // namespace
+}  // namespace flotsam
