@@ -96,24 +96,6 @@ const char* input_unit(EnsembleInput input) {
   return name_of(input).unit;
 }
 
-SplitCaseText split_ensemble_text(const std::string& text) {
-  // A top-level key starts at column 0 with a character other than space, '#', '-' or a document
-  // marker; the ensemble block runs from `ensemble:` to the next such line.
-  SplitCaseText split;
-  std::istringstream in(text);
-  std::string line;
-  bool inside = false;
-  while (std::getline(in, line)) {
-    const bool top_level =
-        !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#' && line[0] != '\r';
-    if (top_level) inside = line.rfind("ensemble:", 0) == 0;
-    (inside ? split.ensemble_text : split.case_text) += line;
-    split.ensemble_text += "\n";
-    split.case_text += "\n";
-  }
-  return split;
-}
-
 EnsembleConfig parse_ensemble(const std::string& ensemble_text, const std::string& file_name) {
   if (ensemble_text.find_first_not_of(" \n") == std::string::npos)
     throw_input_error(

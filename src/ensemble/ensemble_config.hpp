@@ -2,10 +2,12 @@
 // The `ensemble:` section of a case file (docs/case-format.md, "ensemble"): how many members,
 // which inputs vary and how, an optional sweep of one input over a list of values, and the
 // blocking definition (docs/model.md, "Blocking"). The section sits at the top level of the case
-// file, written as a block; `split_ensemble_text` cuts it out, leaving the case text with the
-// same line numbers, so that messages about either part name the right line.
+// file, written as a block; `split_ensemble_text` (io/case_file.hpp) cuts it out, leaving the
+// case text with the same line numbers, so that messages about either part name the right line.
 #include <string>
 #include <vector>
+
+#include "io/case_file.hpp"
 
 namespace flotsam {
 
@@ -65,14 +67,6 @@ struct EnsembleConfig {
   }
   int sweep_value_count() const { return has_sweep ? static_cast<int>(sweep_values.size()) : 1; }
 };
-
-/// A case file's text cut in two with the line numbers kept: `case_text` has the ensemble
-/// section's lines emptied, `ensemble_text` has every other line emptied.
-struct SplitCaseText {
-  std::string case_text;
-  std::string ensemble_text;  // empty when the file has no `ensemble:` key at the top level
-};
-SplitCaseText split_ensemble_text(const std::string& text);
 
 /// Reads and checks the ensemble section (`ensemble_text` of split_ensemble_text); errors are
 /// InputError "file:line: ensemble.key: what was expected". No section is an error telling what

@@ -4,6 +4,7 @@
 #include "io/case_file.hpp"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cctype>
@@ -325,8 +326,31 @@ std::string case_coordinate_system(const std::vector<GeodataCrs>& geodata, const
 
 }  // namespace
 
+SplitCaseText split_ensemble_text(const std::string& text) {
+  // A top-level key starts at column 0 with a character other than space, '#', '-' or a document
+  // marker; the ensemble block runs from `ensemble:` to the next such line.
+  SplitCaseText split;
+  std::istringstream in(text);
+  std::string line;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    const bool top_level =
+        !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#' && line[0] != '\r';
+    if (top_level) inside = line.rfind("ensemble:", 0) == 0;
+    (inside ? split.ensemble_text : split.case_text) += line;
+    split.ensemble_text += "\n";
+    split.case_text += "\n";
+  }
+  return split;
+}
+
 Case parse_case(const std::string& text, const std::string& file_name) {
-  YamlDocument document(text, file_name);
+  const SplitCaseText split = split_ensemble_text(text);
+  if (split.ensemble_text.find_first_not_of(" \n") != std::string::npos)  // a run: as written
+    spdlog::info(
+        "{}: the `ensemble:` section is for `flotsam ensemble`; this is the case as written",
+        file_name);
+  YamlDocument document(split.case_text, file_name);
   const YamlMap root = document.root();
   Case c;
   c.file = file_name;

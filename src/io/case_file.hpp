@@ -12,7 +12,16 @@ namespace flotsam {
 /// against the case file's folder.
 Case read_case(const std::string& path);
 
-/// Parses the text of a case file; `file_name` is used in messages, for the default name (its
+/// A case file's text cut in two with the line numbers kept: `case_text` has the ensemble
+/// section's lines emptied, `ensemble_text` has every other line emptied.
+struct SplitCaseText {
+  std::string case_text;
+  std::string ensemble_text;  // blank lines only when the file has no top-level `ensemble:`
+};
+SplitCaseText split_ensemble_text(const std::string& text);
+
+/// Parses the text of a case file (its `ensemble:` section, flotsam ensemble's, left aside
+/// with a word in the log); `file_name` is used in messages, for the default name (its
 /// stem) and to resolve relative paths (its folder).
 Case parse_case(const std::string& text, const std::string& file_name);
 

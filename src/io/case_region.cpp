@@ -89,8 +89,10 @@ RegionGeometry read_region(const YamlMap& m, const std::filesystem::path& case_f
   g.building_mesh_size = m.number("building_mesh_size", g.building_mesh_size, Range::positive());
   g.pier_mesh_size = m.number("pier_mesh_size", g.pier_mesh_size, Range::positive());
   g.refine_distance = m.number("refine_distance", g.refine_distance, Range::non_negative());
-  g.merge_distance = m.number("merge_distance", g.merge_distance, Range::non_negative());
-  g.min_building_area = m.number("min_building_area", g.min_building_area, Range::non_negative());
+  if (m.has("merge_distance"))
+    g.merge_distance = m.number("merge_distance", 0.0, Range::non_negative());
+  if (m.has("min_building_area"))
+    g.min_building_area = m.number("min_building_area", 0.0, Range::non_negative());
   return g;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Geometries the mesh generator knows (issue 2 item 4), and where a case's mesh comes from.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,10 +83,18 @@ struct RegionGeometry {
   double building_mesh_size = 2.0;             // [m] on the buildings' walls
   double pier_mesh_size = 1.0;                 // [m] on the piers
   double refine_distance = 20.0;               // [m] over which the size grows back to mesh_size
-  double merge_distance = 0.1;                 // [m] consecutive vertices closer are merged
-  double min_building_area = 1.0;              // [m^2] smaller footprints are dropped
+  std::optional<double> merge_distance;        // [m] consecutive vertices closer are merged
+  std::optional<double> min_building_area;     // [m^2] smaller footprints are dropped
   std::function<double(const Vec2&)> size_at;  // an extra bound on the size [m] (steep
                                                // terrain), or empty
+
+  // Unless given, both follow the scale of the buildings' walls: a twentieth of their element
+  // size, and the square of half of it (0.1 m and 1 m^2 at the default 2 m; 2.5 mm and
+  // 6.25 cm^2 for a laboratory model meshed at 5 cm).
+  double merge() const { return merge_distance.value_or(building_mesh_size / 20.0); }
+  double smallest_building() const {
+    return min_building_area.value_or(0.25 * building_mesh_size * building_mesh_size);
+  }
 };
 
 struct MeshSource {

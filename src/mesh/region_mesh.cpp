@@ -1,7 +1,7 @@
 // A domain from geodata (RegionGeometry, geometry.hpp) -> checked rings -> Gmsh model -> mesh.
 //
 //   1. clean: consecutive vertices closer than merge_distance merged, buildings smaller than
-//      min_building_area dropped (reported in the log), never meshed as slivers;
+//      min_building_area dropped (a warning names them), never meshed as slivers;
 //   2. check: every ring simple, every hole inside the outline and apart from every other hole;
 //      errors name the features (file, layer, feature id) and what is wrong;
 //   3. boundary lines: their ends are inserted into the outline where they fall on a side, and
@@ -99,7 +99,7 @@ void check_holes(const NamedRing& outline, const std::vector<Hole>& holes) {
 /// Inserts the ends of the lines into the outline where they fall on a side, then names each
 /// side: the group of the line it lies along, else the default.
 std::vector<std::string> side_groups(std::vector<Vec2>& outline, const RegionGeometry& g) {
-  const double tol = std::max(g.merge_distance, 1e-9);
+  const double tol = std::max(g.merge(), 1e-9);
   for (const BoundaryLine& line : g.lines)
     for (const Vec2& end : {line.points.front(), line.points.back()}) {
       const std::size_t n = outline.size();
@@ -162,21 +162,21 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
        {std::pair{"mesh_size", g.mesh_size}, std::pair{"building_mesh_size", g.building_mesh_size},
         std::pair{"pier_mesh_size", g.pier_mesh_size}})
     require_positive(source, key, value);
-  NamedRing outline{cleaned(g.outline.points, g.merge_distance), g.outline.name};
+  NamedRing outline{cleaned(g.outline.points, g.merge()), g.outline.name};
   check_simple(outline);
 
   std::vector<Hole> holes;
   std::vector<NamedRing> islands, buildings, pier_outlines;
   for (const NamedRing& r : g.islands) {
-    islands.push_back({cleaned(r.points, g.merge_distance), r.name});
+    islands.push_back({cleaned(r.points, g.merge()), r.name});
     check_simple(islands.back());
     holes.push_back(make_hole(islands.back().points, islands.back().name));
   }
   std::vector<std::string> dropped;
   for (const NamedRing& r : g.buildings) {
-    NamedRing b{cleaned(r.points, g.merge_distance), r.name};
+    NamedRing b{cleaned(r.points, g.merge()), r.name};
     if (b.points.size() >= 3) check_simple(b);  // a crossed footprint is an error, not a sliver
-    if (b.points.size() < 3 || std::abs(signed_area(b.points)) < g.min_building_area) {
+    if (b.points.size() < 3 || std::abs(signed_area(b.points)) < g.smallest_building()) {
       dropped.push_back(b.name);
       continue;
     }
@@ -184,8 +184,10 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
     buildings.push_back(std::move(b));
   }
   if (!dropped.empty())
-    spdlog::info("{}: {} building footprint(s) smaller than {} m^2 left out (not meshed): {}",
-                 source, dropped.size(), g.min_building_area, fmt::join(dropped, "; "));
+    spdlog::warn(
+        "{}: {} building footprint(s) smaller than {} m^2 left out (not meshed; "
+        "mesh.region.min_building_area): {}",
+        source, dropped.size(), g.smallest_building(), fmt::join(dropped, "; "));
   for (std::size_t k = 0; k < g.piers.size(); ++k) {
     const Pier& p = g.piers[k];
     require_positive(source, "a pier's radius", p.radius);
@@ -198,7 +200,7 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
                                                    k + 1, p.centre.x(), p.centre.y(), p.radius)));
   }
   for (const NamedRing& r : g.pier_outlines) {
-    pier_outlines.push_back({cleaned(r.points, g.merge_distance), r.name});
+    pier_outlines.push_back({cleaned(r.points, g.merge()), r.name});
     check_simple(pier_outlines.back());
     holes.push_back(make_hole(pier_outlines.back().points, r.name));
   }

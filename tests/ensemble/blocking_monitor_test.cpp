@@ -33,7 +33,7 @@ struct OneLogAtOnePier : ::testing::Test {
     JamStatistics s;
     s.bridge_blockage = {jammed ? 20.0 / 44.0 : 0.0};
     s.released = 1;
-    if (jammed) s.jams.push_back({{0}, {2}, 0, {}});
+    if (jammed) s.jams.push_back({{0}, {2}, 0, {}, 0.0, {}});
     (jammed ? s.trapped : s.floating) = 1;
     return s;
   }

@@ -1177,3 +1177,21 @@ TEST(CaseFile, TheJamsVerticalExtentAndItsPorosityAreRead) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A case with an `ensemble:` section runs as written (flotsam run, info): the section is
+// flotsam ensemble's, and the case read is the same as without it.
+TEST(CaseFile, AnEnsembleSectionIsLeftToFlotsamEnsemble) {
+  const Case with = parse_case(
+      appended("ensemble:\n  members: 3\n  sweep: {input: discharge_scale, values: [0.5, 1]}\n"),
+      "case.yaml");
+  const Case without = parse_case(base_case, "case.yaml");
+  EXPECT_EQ(with.name, without.name);
+  EXPECT_EQ(with.time.end, without.time.end);
+  EXPECT_EQ(with.flow.boundaries.size(), without.flow.boundaries.size());
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -150,3 +150,25 @@ TEST(MeshBuilder, RejectsNeighboursDisagreeingOnAMidNode) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// At UTM coordinates (x ~ 5e5, y ~ 6e6 m) a mesh file's mid nodes are off their straight edges
+// by the rounding of such numbers (up to 1.9e-9 m seen from Gmsh on a 1 m mesh): the elements are
+// straight. A mid node 1e-4 m off (a 1 m edge on a 1 km curve) is curved there as anywhere.
+TEST(Mesh, AStraightMeshAtUtmCoordinatesHasNoCurvedElement) {
+  Mesh mesh = make_rectangle_mesh(
+      {.x0 = 499990.0, .y0 = 5999990.0, .length = 20.0, .width = 10.0, .nx = 20, .ny = 10});
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)  // rounding-sized jitter on every node
+    mesh.nodes[n] += Vec2(n % 2 ? 1.9e-9 : -1.9e-9, n % 3 ? -1.9e-9 : 1.9e-9);
+  int curved = 0;
+  for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e) curved += mesh.is_curved(e);
+  EXPECT_EQ(curved, 0);
+  const int mid = mesh.elements[7][3];
+  mesh.nodes[mid] += Vec2(0.0, 1e-4);
+  EXPECT_TRUE(mesh.is_curved(7));
+}
+
+}  // namespace
+}  // namespace flotsam

@@ -207,11 +207,15 @@ void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix) {
 
 std::string FvEngine::summary() const {
   const SubStepStats& s = solver_.sub_steps();
+  // Still, dry water has no wave speed: its sub-steps took what was left of each step.
+  const std::string courant = s.smallest > 0.0
+                                  ? fmt::format("Courant step smallest {:.3g} s, mean {:.3g} s",
+                                                s.smallest, s.count > 0 ? s.total / s.count : 0.0)
+                                  : std::string("no Courant limit (the water was dry and still)");
   return fmt::format(
-      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), Courant step "
-      "smallest {:.3g} s, mean {:.3g} s; wet {:.1f} % of the area\n",
-      solver_.cells().cell_count, s.count, s.rejected, s.smallest,
-      s.count > 0 ? s.total / s.count : 0.0, 100.0 * solver_.wet_fraction());
+      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet {:.1f} % "
+      "of the area\n",
+      solver_.cells().cell_count, s.count, s.rejected, courant, 100.0 * solver_.wet_fraction());
 }
 
 std::vector<std::string> FvEngine::write_envelope_rasters(const std::string& prefix,

@@ -175,3 +175,31 @@ TEST(FvEngine, SettleMarchesToTheUniformFlow) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A dry, still basin under rain for one step shorter than any Courant step of its film: no
+// sub-step was Courant-limited, and the summary says so rather than "smallest 0 s"; once the
+// water moves, it gives the smallest and mean Courant steps.
+TEST(FvEngine, SummaryOfRainOnADryBasinStatesThatNoCourantLimitApplied) {
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 10, 4, true});
+  Case c = test::closed_basin_case(-1.0);  // the surface below the bed: dry
+  c.flow.rain.enabled = true;
+  c.flow.rain.intensity = TimeSeries(36.0);  // [mm/h]
+  FvEngine dry(mesh, c);
+  dry.initialize();
+  dry.step(1.0);
+  EXPECT_EQ(dry.solver().sub_steps().count, 1);
+  EXPECT_NE(dry.summary().find("no Courant limit (the water was dry and still)"), std::string::npos)
+      << dry.summary();
+  EXPECT_EQ(dry.summary().find("smallest 0 s"), std::string::npos) << dry.summary();
+  const Case moving_flow = moving_case();  // the engine keeps a reference to its case
+  FvEngine moving(mesh, moving_flow);
+  moving.initialize();
+  moving.step(0.2);
+  EXPECT_NE(moving.summary().find("Courant step smallest "), std::string::npos) << moving.summary();
+}
+
+}  // namespace
+}  // namespace flotsam
