@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace flotsam {
 
@@ -28,17 +27,22 @@ void set_wetted_heights(BodySet& bodies, const JamStatistics& statistics,
   }
 }
 
+namespace {
+
+/// The top of a gap's opening [m]: the surface, or the soffit below it.
+double opening_top(const GapLevel& level, const Bridge& bridge) {
+  return bridge.deck ? std::min(level.surface, bridge.deck->soffit) : level.surface;
+}
+
+}  // namespace
+
 double opening_height(const GapLevel& level, const Bridge& bridge) {
-  const double soffit =
-      bridge.deck ? bridge.deck->soffit : std::numeric_limits<double>::infinity();  // [m]
-  return std::max(0.0, std::min(level.surface, soffit) - level.bed);
+  return std::max(0.0, opening_top(level, bridge) - level.bed);
 }
 
 double closed_height(const GapLevel& level, const Bridge& bridge, double thickness) {
-  const double soffit =
-      bridge.deck ? bridge.deck->soffit : std::numeric_limits<double>::infinity();  // [m]
-  const double bottom = std::max(level.bed, level.surface - thickness);
-  return std::max(0.0, std::min(level.surface, soffit) - bottom);
+  const double bottom = std::max(level.bed, level.surface - thickness);  // [m] of the jam's band
+  return std::max(0.0, opening_top(level, bridge) - bottom);
 }
 
 void measure_opening_closure(JamStatistics& stats, const JamGeometry& geometry,

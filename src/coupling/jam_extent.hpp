@@ -8,7 +8,6 @@
 // Its bodies act on the water over max(d, T) rather than their own draft d (the wetted height
 // of (M-6) and (M-8)), so that the flow meets the blocked area; the force each body exchanges
 // with the water stays its own drag, so momentum is exchanged exactly (spec 5).
-#include <span>
 #include <vector>
 
 #include "bodies/body_set.hpp"

@@ -11,42 +11,14 @@
 
 #include <cmath>
 
+#include "../support/paper_bridges.hpp"
 #include "core/constants.hpp"
 
 namespace flotsam {
 namespace {
 
 constexpr double tolerance = 1e-12;  // [-] round-off on ratios of lengths of order 10 m
-constexpr int pier_1 = 4;            // the mesh group of pier_1
-
-JamGeometry paper_geometry() {
-  ChannelGeometry c;
-  c.length = 1500.0;
-  c.width = 170.0;
-  c.piers = {
-      {{600.0, 42.5}, 30.0}, {{600.0, 127.5}, 30.0}, {{900.0, 42.5}, 30.0}, {{900.0, 127.5}, 30.0}};
-  return jam_geometry_from_channel(
-      c, {"inflow", "outflow", "bank_right", "bank_left", "pier_1", "pier_2", "pier_3", "pier_4"},
-      "test mesh");
-}
-
-BodySet three_logs_against_pier_1() {
-  BodySet bodies;
-  const auto add_log = [&](double x, double y, double angle, double L) {
-    BodySpec spec;
-    spec.length = L;
-    spec.width = 1.0;
-    spec.height = 1.0;
-    spec.density = 600.0;
-    spec.position = Vec2(x, y);
-    spec.angle = angle;
-    bodies.add(spec);
-  };
-  add_log(575.0, 75.5, pi / 2.0, 6.0);
-  add_log(575.0, 79.5, pi / 2.0, 6.0);
-  add_log(566.0, 82.0, 0.0, 20.0);
-  return bodies;
-}
+using namespace test;                // the paper's channel and its logs (support/paper_bridges.hpp)
 
 ContactReport jam_report() {
   ContactReport r;

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../support/paper_bridges.hpp"
 #include "../support/scratch_path.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -26,34 +27,7 @@ using ::testing::HasSubstr;
 
 constexpr double tolerance = 1e-12;  // [-] round-off on ratios of lengths of order 100 m
 
-// Mesh group indices of the channel's groups, in the generator's order.
-const std::vector<std::string> channel_groups = {"inflow", "outflow", "bank_right", "bank_left",
-                                                 "pier_1", "pier_2",  "pier_3",     "pier_4"};
-constexpr int bank_right = 2, bank_left = 3, pier_1 = 4, pier_2 = 5, pier_4 = 7;
-
-ChannelGeometry paper_channel() {
-  ChannelGeometry c;
-  c.length = 1500.0;
-  c.width = 170.0;
-  c.piers = {
-      {{600.0, 42.5}, 30.0}, {{600.0, 127.5}, 30.0}, {{900.0, 42.5}, 30.0}, {{900.0, 127.5}, 30.0}};
-  return c;
-}
-
-JamGeometry paper_geometry() {
-  return jam_geometry_from_channel(paper_channel(), channel_groups, "test mesh");
-}
-
-/// A log of length L and width 1 m with its centre at (x, y), turned by `angle` from the x axis.
-void add_log(BodySet& bodies, double x, double y, double angle, double L) {
-  BodySpec spec;
-  spec.length = L;
-  spec.width = 1.0;
-  spec.height = 1.0;
-  spec.position = Vec2(x, y);
-  spec.angle = angle;
-  bodies.add(spec);
-}
+using namespace test;  // the paper's channel, its groups and logs (support/paper_bridges.hpp)
 
 ContactReport make_report(int body_count, std::vector<std::pair<int, int>> body_body,
                           std::vector<std::pair<int, int>> body_group) {
@@ -176,14 +150,6 @@ TEST(FootprintHalfExtent, RotatedRectangleProjectsOnBothAxes) {
 // Three logs against the upstream face of pier_1: two across the flow spanning y in
 // [72.5, 78.5] and [76.5, 82.5], one along the flow spanning [81.5, 82.5]; together 10 m of the
 // 25 m gap between the piers.
-BodySet three_logs_against_pier_1() {
-  BodySet bodies;
-  add_log(bodies, 575.0, 75.5, pi / 2.0, 6.0);
-  add_log(bodies, 575.0, 79.5, pi / 2.0, 6.0);
-  add_log(bodies, 566.0, 82.0, 0.0, 20.0);
-  return bodies;
-}
-
 TEST(JamStatistics, ThreeLogsAgainstAPierBlockTenOfTheTwentyFiveMetreGap) {
   const BodySet bodies = three_logs_against_pier_1();
   const auto report = make_report(3, {{0, 1}, {1, 2}}, {{0, pier_1}});

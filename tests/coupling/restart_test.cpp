@@ -235,16 +235,7 @@ Case jam_at_deck_case(double end) {
   c.output.interval = 5.0;
   c.bodies.contact.restitution = 0.0;
   c.bodies.jams = {.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
-  for (const double x : {24.0, 26.0})
-    for (const double y : {5.0, 15.0}) {
-      BodySpec log;
-      log.length = 9.9;
-      log.width = log.height = 0.6;
-      log.density = 800.0;
-      log.position = Vec2(x, y);
-      log.angle = 1.5707963267948966;
-      c.bodies.bodies.push_back(log);
-    }
+  test::add_logs_across(c, {24.0, 26.0}, {5.0, 15.0});
   c.bridges = {{.name = "bridge",
                 .start = Vec2(30.0, -1.0),
                 .end = Vec2(30.0, 21.0),

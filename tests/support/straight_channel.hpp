@@ -4,6 +4,7 @@
 // surface held at H0 over a flat bed at the right, slip walls at the sides, still water at H0 to
 // start (Q [m^3/s] constant or a hydrograph). Each test adds its friction, viscosity, time and
 // bodies.
+#include <initializer_list>
 #include <string>
 
 #include "io/case.hpp"
@@ -48,6 +49,23 @@ inline void add_colliding_logs_and_release(Case& c, double release_end) {
   line.width_min = 0.2, line.width_max = 0.4;
   line.seed = 7;
   c.bodies.releases = {line};
+}
+
+/// Logs across the flow (9.9 m x 0.6 m, 800 kg/m^3: they draw 0.448 m) with their centres at
+/// every (x, y) of `xs` x `ys` [m]: two abreast fill a 20 m channel but for 0.1 m at the banks
+/// and between them.
+inline void add_logs_across(Case& c, std::initializer_list<double> xs,
+                            std::initializer_list<double> ys) {
+  for (const double x : xs)
+    for (const double y : ys) {
+      BodySpec log;
+      log.length = 9.9;
+      log.width = log.height = 0.6;
+      log.density = 800.0;
+      log.position = Vec2(x, y);
+      log.angle = 1.5707963267948966;  // pi / 2: across the flow
+      c.bodies.bodies.push_back(log);
+    }
 }
 
 }  // namespace flotsam::test

@@ -28,6 +28,7 @@
 #include <limits>
 
 #include "../support/bridge_across.hpp"
+#include "../support/reach_momentum.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/jam_extent.hpp"
@@ -39,8 +40,8 @@ namespace {
 
 constexpr double length = 300.0, width = 20.0, H0 = 2.0, Q = 30.0;  // [m], [m], [m], [m^3/s]
 constexpr double end_time = 1200.0, averaging_time = 600.0;         // [s]
-constexpr double rho = water_density_default, g = gravity;
-constexpr double porosity = 0.5;  // [-]
+constexpr double rho = water_density_default;                       // [kg m^-3]
+constexpr double porosity = 0.5;                                    // [-]
 
 Case channel_with_logs(JamExtent extent) {
   Case c = test::straight_channel_case("accumulation", Q, H0);
@@ -53,28 +54,9 @@ Case channel_with_logs(JamExtent extent) {
   c.bodies.physics.drag_coefficient = 1.2;
   c.bodies.contact.restitution = 0.0;  // wood on wood and on concrete
   c.bodies.jams = {.vertical_extent = extent, .porosity = porosity};
-  for (const double x : {144.0, 146.0})
-    for (const double y : {5.0, 15.0}) {
-      BodySpec log;
-      log.length = 9.9;
-      log.width = log.height = 0.6;
-      log.density = 800.0;
-      log.position = Vec2(x, y);
-      log.angle = pi / 2;
-      c.bodies.bodies.push_back(log);
-    }
+  test::add_logs_across(c, {144.0, 146.0}, {5.0, 15.0});
   c.bridges = {test::bridge_across("bridge", 150.0, width, test::plain_deck(2.1, 2.9, 2.0), 20.0)};
   return c;
-}
-
-/// The depth [m] upstream whose momentum function per width, q^2 / h + g h^2 / 2, exceeds that
-/// of depth h2 by `excess` [m^3/s^2] (the subcritical root, by Newton from h2).
-double depth_upstream(double q, double h2, double excess) {
-  const double target = q * q / h2 + 0.5 * g * h2 * h2 + excess;
-  double h = h2;
-  for (int k = 0; k < 50; ++k)
-    h -= (q * q / h + 0.5 * g * h * h - target) / (g * h - q * q / (h * h));
-  return h;
 }
 
 struct Means {
@@ -93,19 +75,8 @@ Means run(JamExtent extent) {
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
   s.initialize();
   const FlowField& flow = s.flow().field();
-  // rho * integral of (h u^2 + g h^2 / 2) dy across x [N] (flat bed at 0: h = eta), and the
-  // section's mean depth [m].
   const auto section = [&](double x, double& depth) {
-    double sum = 0.0, h_sum = 0.0;
-    const int samples = 200;
-    int hint = -1;
-    for (int k = 0; k < samples; ++k) {
-      const FlowSample f = flow.sample(Vec2(x, width * (k + 0.5) / samples), s.time(), hint);
-      sum += f.H * f.u.x() * f.u.x() + 0.5 * g * f.H * f.H;
-      h_sum += f.H;
-    }
-    depth = h_sum / samples;
-    return rho * sum * width / samples;
+    return test::section_momentum(flow, x, width, s.time(), depth);
   };
   Means m;
   int n = 0;
@@ -147,8 +118,8 @@ TEST(JamAccumulation, ActsOverItsThicknessAndTheWaterFeelsItWithMomentumExchange
   const Means acc = run(JamExtent::accumulation);
   const Means layer = run(JamExtent::layer);
   const double q = Q / width;  // [m^2/s]
-  const double predicted =
-      depth_upstream(q, acc.h2, acc.force / (rho * width)) - depth_upstream(q, acc.h2, 0.0);
+  const double predicted = test::depth_upstream(q, acc.h2, acc.force / (rho * width)) -
+                           test::depth_upstream(q, acc.h2, 0.0);
   const double draft = acc.draft;  // [m] of the logs (spec 2)
   std::printf(
       "accumulation: %d bodies jammed, T >= %.3f m (draft %.3f m); momentum: reach %.1f N, "

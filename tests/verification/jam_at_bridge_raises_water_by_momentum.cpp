@@ -21,6 +21,7 @@
 #include <cstdio>
 
 #include "../support/bridge_across.hpp"
+#include "../support/reach_momentum.hpp"
 #include "../support/straight_channel.hpp"
 #include "core/constants.hpp"
 #include "coupling/simulation.hpp"
@@ -31,7 +32,7 @@ namespace {
 
 constexpr double length = 300.0, width = 20.0, H0 = 2.0, Q = 30.0;  // [m], [m], [m], [m^3/s]
 constexpr double end_time = 1200.0, averaging_time = 600.0;         // [s]
-constexpr double rho = water_density_default, g = gravity;
+constexpr double rho = water_density_default;                       // [kg m^-3]
 
 Case channel_with_raft() {
   Case c = test::straight_channel_case("raft", Q, H0);
@@ -55,16 +56,6 @@ Case channel_with_raft() {
   return c;
 }
 
-/// The depth [m] upstream whose momentum function per width, q^2 / h + g h^2 / 2, exceeds that
-/// of depth h2 by `excess` [m^3/s^2] (the subcritical root, by Newton from h2).
-double depth_upstream(double q, double h2, double excess) {
-  const double target = q * q / h2 + 0.5 * g * h2 * h2 + excess;
-  double h = h2;
-  for (int k = 0; k < 50; ++k)
-    h -= (q * q / h + 0.5 * g * h * h - target) / (g * h - q * q / (h * h));
-  return h;
-}
-
 TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
   Simulation s(
       channel_with_raft(),
@@ -72,19 +63,8 @@ TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
   s.initialize();
   const FlowField& flow = s.flow().field();
-  // rho * integral of (h u^2 + g h^2 / 2) dy across x [N] (flat bed at 0: h = eta), and the
-  // section's mean depth [m].
   const auto section = [&](double x, double& depth) {
-    double sum = 0.0, h_sum = 0.0;
-    const int samples = 200;
-    int hint = -1;
-    for (int k = 0; k < samples; ++k) {
-      const FlowSample f = flow.sample(Vec2(x, width * (k + 0.5) / samples), s.time(), hint);
-      sum += f.H * f.u.x() * f.u.x() + 0.5 * g * f.H * f.H;
-      h_sum += f.H;
-    }
-    depth = h_sum / samples;
-    return rho * sum * width / samples;
+    return test::section_momentum(flow, x, width, s.time(), depth);
   };
   double balance = 0.0, force = 0.0, rise = 0.0, h2 = 0.0;  // means over the averaging time
   int n = 0;
@@ -101,7 +81,7 @@ TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
   balance /= n, force /= n, rise /= n, h2 /= n;
   const double q = Q / width;  // [m^2/s]
   const double predicted =
-      depth_upstream(q, h2, force / (rho * width)) - depth_upstream(q, h2, 0.0);  // [m]
+      test::depth_upstream(q, h2, force / (rho * width)) - test::depth_upstream(q, h2, 0.0);  // [m]
   std::printf(
       "momentum: reach %.1f N, exchanged %.1f N (%+.2f %%); rise 20 m upstream %.4f m, "
       "by the balance %.4f m (%+.2f %%)\n",
