@@ -90,6 +90,15 @@ Raster Raster::read(const std::string& path, const std::string& origin) {
                      GDT_Float64, 0, 0) != CE_None)
     throw_input_error("{}: could not read the values of '{}' ({})", origin, path,
                       CPLGetLastErrorMsg());
+  // NaN is nodata; an infinite value is never a terrain, a roughness or a weight (unless the
+  // file declares it its nodata value).
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (std::isinf(values[k]) && !(has_nodata && values[k] == nodata_value))
+      throw_input_error(
+          "{}: '{}': pixel (column {}, row {}) holds {}; expected a finite value or the "
+          "raster's nodata value",
+          origin, path, k % static_cast<std::size_t>(grid.columns),
+          k / static_cast<std::size_t>(grid.columns), values[k]);
   Raster raster(std::move(grid), std::move(values),
                 has_nodata ? std::optional<double>(nodata_value) : std::nullopt);
   raster.path_ = path;

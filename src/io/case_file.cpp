@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "core/error.hpp"
 #include "io/case_digest.hpp"
@@ -330,7 +331,9 @@ SplitCaseText split_ensemble_text(const std::string& text) {
   // A top-level key starts at column 0 with a character other than space, '#', '-' or a document
   // marker; the ensemble block runs from `ensemble:` to the next such line.
   SplitCaseText split;
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark (some editors save one) is not part of the first key.
+  constexpr std::string_view bom = "\xEF\xBB\xBF";
+  std::istringstream in(text.starts_with(bom) ? text.substr(bom.size()) : text);
   std::string line;
   bool inside = false;
   while (std::getline(in, line)) {

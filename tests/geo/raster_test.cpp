@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -145,6 +146,19 @@ TEST(Raster, ReadErrorsNameTheOriginAndTheFile) {
   write_geotiff((dir / "degrees.tif").string(), geographic, std::vector<double>(35, 1.0));
   EXPECT_NE(message((dir / "degrees.tif").string()).find("is in geographic coordinates (degrees)"),
             std::string::npos);
+  // An infinite pixel (NaN is nodata; +-Inf is neither a value nor nodata) is named.
+  for (const double bad :
+       {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+    RasterGrid g = small_grid();
+    g.crs_wkt = utm_33n();
+    std::vector<double> v(35, 1.0);
+    v[1 * 7 + 5] = bad;  // column 5, row 1
+    write_geotiff((dir / "inf.tif").string(), g, v);
+    EXPECT_EQ(message((dir / "inf.tif").string()),
+              "case.yaml:7: bed.raster: '" + (dir / "inf.tif").string() +
+                  "': pixel (column 5, row 1) holds " + (bad > 0 ? "inf" : "-inf") +
+                  "; expected a finite value or the raster's nodata value");
+  }
   fs::remove_all(dir);
 }
 

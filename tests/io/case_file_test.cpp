@@ -1195,3 +1195,20 @@ TEST(CaseFile, AnEnsembleSectionIsLeftToFlotsamEnsemble) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A case saved with a UTF-8 byte-order mark: its first key is read as itself, an `ensemble:`
+// section first in the file included.
+TEST(CaseFile, AByteOrderMarkIsNotPartOfTheFirstKey) {
+  const std::string bom = "\xEF\xBB\xBF";
+  const SplitCaseText split = split_ensemble_text(bom + "ensemble:\n  members: 3\nname: x\n");
+  EXPECT_EQ(split.ensemble_text, "ensemble:\n  members: 3\n\n");
+  EXPECT_EQ(split.case_text, "\n\nname: x\n");
+  const Case with = parse_case(bom + base_case, "case.yaml");
+  EXPECT_EQ(with.name, parse_case(base_case, "case.yaml").name);
+}
+
+}  // namespace
+}  // namespace flotsam
