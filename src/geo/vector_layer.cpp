@@ -91,7 +91,13 @@ VectorLayer read_vector_layer(const std::string& path, const std::string& layer,
         GeoLine line;
         for (const auto& p : *flat->toLineString()) line.points.emplace_back(p.getX(), p.getY());
         line.name = name;
-        if (!label_field.empty()) line.label = feature->GetFieldAsString(label_field.c_str());
+        if (!label_field.empty()) {
+          const int k = feature->GetFieldIndex(label_field.c_str());
+          line.label = feature->IsFieldSetAndNotNull(k) ? feature->GetFieldAsString(k) : "";
+          if (line.label.empty())
+            throw_input_error("{}: {} has no '{}' (it is {}); each line needs one", origin, name,
+                              label_field, feature->IsFieldSetAndNotNull(k) ? "empty" : "NULL");
+        }
         for (int k = 0; k < fields->GetFieldCount(); ++k) {
           const OGRFieldType type = fields->GetFieldDefn(k)->GetType();
           if ((type == OFTReal || type == OFTInteger || type == OFTInteger64) &&

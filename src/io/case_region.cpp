@@ -27,8 +27,16 @@ std::vector<Vec2> read_points(const YamlValue& value) {
   return points;
 }
 
-/// Rings of all polygons of a layer (and their holes, when asked) with their feature names.
-std::vector<NamedRing> rings_of(const VectorLayer& layer, std::vector<NamedRing>* holes) {
+/// Rings of all polygons of a layer (and their holes, when asked) with their feature names; a
+/// line in it (a closed LineString drawn for a footprint) is an error naming `value` and the
+/// feature, not a polygon left out.
+std::vector<NamedRing> rings_of(const YamlValue& value, const VectorLayer& layer,
+                                std::vector<NamedRing>* holes) {
+  if (!layer.lines.empty())
+    value.fail(
+        fmt::format("{} is a line; expected polygons (a closed line is not an area: "
+                    "save it as a polygon, e.g. ogr2ogr -nlt POLYGON)",
+                    layer.lines.front().name));
   std::vector<NamedRing> rings;
   for (const GeoPolygon& p : layer.polygons) {
     rings.push_back({p.ring, p.name});
@@ -52,7 +60,7 @@ RegionGeometry read_region(const YamlMap& m, const std::filesystem::path& case_f
       outline.fail(fmt::format("expected at least 3 corners, got {}", g.outline.points.size()));
   } else {
     const VectorLayer layer = read_layer(outline, case_folder);
-    std::vector<NamedRing> rings = rings_of(layer, &g.islands);
+    std::vector<NamedRing> rings = rings_of(outline, layer, &g.islands);
     if (rings.size() != 1)
       outline.fail(
           fmt::format("expected one polygon in the outline's layer, got {}", rings.size()));
@@ -76,7 +84,7 @@ RegionGeometry read_region(const YamlMap& m, const std::filesystem::path& case_f
   }
   g.default_group = m.text("default_group", g.default_group);
   if (const auto buildings = m.find("buildings"))
-    g.buildings = rings_of(read_layer(*buildings, case_folder), nullptr);
+    g.buildings = rings_of(*buildings, read_layer(*buildings, case_folder), nullptr);
   if (const auto piers = m.find("piers"))
     for (const YamlValue& item : piers->list()) {
       const YamlMap p = item.map();
@@ -84,7 +92,7 @@ RegionGeometry read_region(const YamlMap& m, const std::filesystem::path& case_f
           {{p.get("x").number(), p.get("y").number()}, p.get("radius").number(Range::positive())});
     }
   if (const auto outlines = m.find("pier_outlines"))
-    g.pier_outlines = rings_of(read_layer(*outlines, case_folder), nullptr);
+    g.pier_outlines = rings_of(*outlines, read_layer(*outlines, case_folder), nullptr);
   g.mesh_size = m.number("mesh_size", g.mesh_size, Range::positive());
   g.building_mesh_size = m.number("building_mesh_size", g.building_mesh_size, Range::positive());
   g.pier_mesh_size = m.number("pier_mesh_size", g.pier_mesh_size, Range::positive());

@@ -1212,3 +1212,49 @@ TEST(CaseFile, AByteOrderMarkIsNotPartOfTheFirstKey) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// Geodata that would be silently wrong: building footprints drawn as closed lines (they were left
+// out, and the next error blamed the boundaries), and a boundary line whose name is NULL (it
+// became a group the user never named). Each is refused naming the key and the feature.
+TEST(CaseFile, FootprintsAsLinesAndUnnamedBoundaryLinesAreRefusedNamingTheFeature) {
+  const std::filesystem::path dir = test::fresh_test_folder("region_lines");
+  write_polygon_layer((dir / "town.gpkg").string(), "outline",
+                      {{{0, 0}, {200, 0}, {200, 80}, {0, 80}}}, "");
+  std::ofstream(dir / "houses.geojson") << R"({"type": "FeatureCollection",
+    "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32633"}}, "features": [
+    {"type": "Feature", "properties": {}, "geometry": {"type": "LineString",
+     "coordinates": [[50, 20], [60, 20], [60, 30], [50, 30], [50, 20]]}}]})";
+  std::ofstream(dir / "lines.geojson") << R"({"type": "FeatureCollection",
+    "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32633"}}, "features": [
+    {"type": "Feature", "properties": {"name": "inflow"}, "geometry": {"type": "LineString",
+     "coordinates": [[0, 80], [0, 0]]}},
+    {"type": "Feature", "properties": {"name": null}, "geometry": {"type": "LineString",
+     "coordinates": [[200, 0], [200, 80]]}}]})";
+  const std::string rest = base_case.substr(base_case.find("flow:"));
+  const auto region = [&](const std::string& boundaries, const std::string& buildings) {
+    return "mesh:\n  region:\n    outline: {file: town.gpkg, layer: outline}\n    boundaries: " +
+           boundaries + "\n" + buildings + "    mesh_size: 10\n" + rest;
+  };
+  const auto message = [&](const std::string& text) {
+    try {
+      parse_case(text, (dir / "case.yaml").string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(message(region("{inflow: [[0, 80], [0, 0]], outflow: [[200, 0], [200, 80]]}",
+                             "    buildings: houses.geojson\n")),
+              HasSubstr("case.yaml:5: mesh.region.buildings: houses.geojson, layer 'houses', "
+                        "feature 0 is a line; expected polygons"));
+  EXPECT_THAT(message(region("{file: lines.geojson}", "")),
+              HasSubstr("mesh.region.boundaries: lines.geojson, layer 'lines', feature 1 has no "
+                        "'name' (it is NULL); each line needs one"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace flotsam
