@@ -83,6 +83,7 @@ void Simulation::initialize() {
     }
   }
   check_decks_stand_above_the_bed();
+  check_probes_inside(case_.output.probes, flow_->field(), case_.file);  // before any output
   next_output_ = time_;
   if (options_.restart) {
     read_checkpoint(checkpoint.string());

@@ -48,6 +48,11 @@ std::vector<int> locate_probes(const std::vector<Probe>& probes, const FlowField
 
 }  // namespace
 
+void check_probes_inside(const std::vector<Probe>& probes, const FlowField& field,
+                         const std::string& case_file) {
+  locate_probes(probes, field, case_file);
+}
+
 ProbeWriter::ProbeWriter(const std::string& csv_path, const std::vector<Probe>& probes,
                          const FlowField& field, const std::string& case_file,
                          std::optional<CsvResume> resume)

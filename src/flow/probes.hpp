@@ -14,6 +14,12 @@
 
 namespace flotsam {
 
+/// Checks that every probe lies inside the domain (sampled at field.time_end()): one outside is an
+/// InputError naming `case_file`, the probe's line, name and position. A run calls it before it
+/// writes anything, so that a bad gauge leaves no output behind.
+void check_probes_inside(const std::vector<Probe>& probes, const FlowField& field,
+                         const std::string& case_file);
+
 class ProbeWriter {
  public:
   /// Callers construct a ProbeWriter only when the case has probes (no probes: no file).

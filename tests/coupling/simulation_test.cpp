@@ -299,3 +299,28 @@ TEST(Simulation, ProbesWriteARowPerStepWithTheEnginesValues) {
 
 }  // namespace
 }  // namespace flotsam
+
+namespace flotsam {
+namespace {
+
+// A gauge outside the domain is refused before the run writes anything: no boundary.vtp, no
+// header-only tables, no run.bin are left behind (the folder stays empty).
+TEST(Simulation, AGaugeOutsideTheDomainIsRefusedBeforeAnyOutput) {
+  const auto dir = test::fresh_test_folder("flotsam_simulation_test");
+  Case c = channel_case(CouplingMode::frozen);
+  c.output.probes = {{.name = "in_a_pier", .position = Vec2(-5.0, 1.0), .line = 31}};
+  Simulation s(
+      c, channel_mesh(),
+      {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+  try {
+    s.initialize();
+    FAIL() << "a gauge outside the domain was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("probe 'in_a_pier' at (-5, 1) m is outside"));
+  }
+  EXPECT_TRUE(!std::filesystem::exists(dir) || std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace flotsam
