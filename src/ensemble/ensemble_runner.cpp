@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <omp.h>
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include "contact/boundary_segments.hpp"
@@ -192,7 +194,7 @@ std::vector<MemberResult> run_members(const std::vector<MemberRun>& runs, const 
                                       MemberProgress& progress) {
   std::vector<MemberResult> results(runs.size());
   std::atomic<std::size_t> next{0};
-  std::atomic<int> done{kept}, failed{0}, workers{jobs};
+  std::atomic<int> done{kept}, failed{0}, workers{0};
   std::mutex mutex;
   std::condition_variable member_finished;
   auto worker = [&] {
@@ -205,8 +207,22 @@ std::vector<MemberResult> run_members(const std::vector<MemberRun>& runs, const 
     --workers;
     member_finished.notify_one();
   };
+  // As many jobs as the system lets start (each thread takes a stack): fewer is a warning, none
+  // an error, never a thread left unjoined.
   std::vector<std::thread> threads;
-  for (int t = 0; t < jobs; ++t) threads.emplace_back(worker);
+  for (int t = 0; t < jobs; ++t) {
+    ++workers;
+    try {
+      threads.emplace_back(worker);
+    } catch (const std::system_error& e) {
+      --workers;
+      if (threads.empty())
+        throw_run_error("could not start a job for the members ({}); try fewer --jobs", e.what());
+      spdlog::warn("started {} of {} jobs ({}); the members run on those", threads.size(), jobs,
+                   e.what());
+      break;
+    }
+  }
   RankTally sent{-1, 0, 0, 0};
   for (bool finished = false; !finished;) {
     {
