@@ -93,10 +93,11 @@ VectorLayer read_vector_layer(const std::string& path, const std::string& layer,
         line.name = name;
         if (!label_field.empty()) {
           const int k = feature->GetFieldIndex(label_field.c_str());
-          line.label = feature->IsFieldSetAndNotNull(k) ? feature->GetFieldAsString(k) : "";
+          const bool set = feature->IsFieldSetAndNotNull(k);
+          line.label = set ? feature->GetFieldAsString(k) : "";
           if (line.label.empty())
             throw_input_error("{}: {} has no '{}' (it is {}); each line needs one", origin, name,
-                              label_field, feature->IsFieldSetAndNotNull(k) ? "empty" : "NULL");
+                              label_field, set ? "empty" : "NULL");
         }
         for (int k = 0; k < fields->GetFieldCount(); ++k) {
           const OGRFieldType type = fields->GetFieldDefn(k)->GetType();

@@ -28,6 +28,18 @@ ContactReport jam_report() {
   return r;
 }
 
+/// The three logs after set_wetted_heights with jams as accumulations at P = 0.5: each acts over
+/// `accumulation_T`.
+BodySet logs_as_accumulation(const JamGeometry& g) {
+  BodySet bodies = three_logs_against_pier_1();
+  const JamConfig accumulation{.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
+  set_wetted_heights(bodies, compute_jam_statistics(bodies, jam_report(), g), g, accumulation);
+  return bodies;
+}
+// V_s = (pi/4) 1^2 (6 + 6 + 20) m^3 = 8 pi m^3 over w_c = 10 m at P = 0.5: T = sqrt(1.6 pi) m
+// (2.242 m).
+const double accumulation_T = std::sqrt(8.0 * pi / (0.5 * 10.0));
+
 /// Every gap of both bridges with the same surface and bed [m].
 std::vector<std::vector<GapLevel>> flat_levels(const JamGeometry& g, double surface, double bed) {
   return gap_levels(g, [&](const Vec2&) { return GapLevel{surface, bed}; });
@@ -59,11 +71,8 @@ TEST(JamExtent, AFloatingLayerReachesItsBodiesDraftAndClosesThatShareOfTheOpenin
 
 TEST(JamExtent, AnAccumulationReachesM_J1sThicknessAndItsBodiesActOverIt) {
   const JamGeometry g = paper_geometry();
-  BodySet bodies = three_logs_against_pier_1();
-  const JamConfig accumulation{.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
-  set_wetted_heights(bodies, compute_jam_statistics(bodies, jam_report(), g), g, accumulation);
-  // V_s = (pi/4) 1^2 (6 + 6 + 20) m^3 = 8 pi m^3 over w_c = 10 m at P = 0.5: T = sqrt(1.6 pi) m.
-  const double T = std::sqrt(8.0 * pi / (0.5 * 10.0));
+  const BodySet bodies = logs_as_accumulation(g);
+  const double T = accumulation_T;
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(bodies.wetted_height[i], T, 1e-12 * T);
   JamStatistics s = compute_jam_statistics(bodies, jam_report(), g);
   EXPECT_NEAR(s.jams[0].thickness, T, 1e-12 * T);
@@ -78,11 +87,8 @@ TEST(JamExtent, AnAccumulationReachesM_J1sThicknessAndItsBodiesActOverIt) {
 TEST(JamExtent, UnderADeckOnlyThePartOfTheJamBelowTheSoffitClosesTheOpening) {
   JamGeometry g = paper_geometry();
   g.bridges[0].deck = DeckConfig{.soffit = 2.0, .top = 3.0, .width = 2.0};
-  BodySet bodies = three_logs_against_pier_1();
-  const JamConfig accumulation{.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
-  set_wetted_heights(bodies, compute_jam_statistics(bodies, jam_report(), g), g, accumulation);
-  JamStatistics s = compute_jam_statistics(bodies, jam_report(), g);
-  const double T = std::sqrt(8.0 * pi / (0.5 * 10.0));  // 2.242 m
+  JamStatistics s = compute_jam_statistics(logs_as_accumulation(g), jam_report(), g);
+  const double T = accumulation_T;
   // The surface at 3 m, above the soffit (pressure flow): the opening is [0, 2] m, the jam
   // [3 - T, 3] m; it closes [3 - T, 2] m of it.
   measure_opening_closure(s, g, flat_levels(g, 3.0, 0.0));
@@ -96,9 +102,8 @@ TEST(JamExtent, UnderADeckOnlyThePartOfTheJamBelowTheSoffitClosesTheOpening) {
 
 TEST(JamExtent, BodiesOutOfEveryJamGetTheirDraftBack) {
   const JamGeometry g = paper_geometry();
-  BodySet bodies = three_logs_against_pier_1();
+  BodySet bodies = logs_as_accumulation(g);
   const JamConfig accumulation{.vertical_extent = JamExtent::accumulation, .porosity = 0.5};
-  set_wetted_heights(bodies, compute_jam_statistics(bodies, jam_report(), g), g, accumulation);
   ContactReport apart;  // the jam broke up: nothing touches
   apart.body_count = 3;
   set_wetted_heights(bodies, compute_jam_statistics(bodies, apart, g), g, accumulation);
