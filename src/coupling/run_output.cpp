@@ -24,6 +24,7 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
+      sources_(layout.sources),
       flow_index_((directory_ / (name + ".pvd")).string(), indexes),
       body_index_((directory_ / (name + "_bodies.pvd")).string(), indexes),
       shared_folder_(shared_folder) {
@@ -37,12 +38,14 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
                                          balance_columns(mesh));
 }
 
-// The balance table's columns: the totals (with the rain and the infiltration when it rains),
+// The balance table's columns: the totals (with the rain and the infiltration when it rains, the
+// sources' volume when there are sources),
 // then the volume that has left through each open boundary group since the start (negative:
 // entered), whose differences give mean discharges.
 std::vector<std::string> RunOutput::balance_columns(const Mesh& mesh) const {
   std::vector<std::string> columns = {"t [s]", "volume [m^3]", "outflow [m^3]"};
   if (rain_) columns.insert(columns.end(), {"rain [m^3]", "infiltration [m^3]"});
+  if (sources_) columns.push_back("sources [m^3]");
   columns.insert(columns.end(), {"balance error [m^3]", "relative error [-]"});
   for (const std::string& group : open_group_names(mesh))
     columns.push_back("outflow " + group + " [m^3]");
@@ -63,6 +66,7 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
       name_(name),
       open_group_(layout.open_group),
       rain_(layout.rain),
+      sources_(layout.sources),
       flow_index_((directory_ / (name + ".pvd")).string()),
       body_index_((directory_ / (name + "_bodies.pvd")).string()),
       times_(times),
@@ -93,6 +97,7 @@ void RunOutput::write(double t, const FlowEngine& flow, const BodySet& bodies, b
   const WaterBalance& b = flow.water_balance();
   std::vector<double> row = {t, b.volume, b.outflow};
   if (rain_) row.insert(row.end(), {b.rain, b.infiltration});
+  if (sources_) row.push_back(b.sources);
   row.insert(row.end(), {b.error(), b.relative_error()});
   for (std::size_t g = 0; g < open_group_.size(); ++g)
     if (open_group_[g]) row.push_back(b.group_outflow[g]);

@@ -5,7 +5,8 @@
 //   boundary.vtp                          the boundary with its groups, once
 //   <name>_bodies.csv                     every body at every output time (trajectories)
 //   <name>_balance.csv                    water volume balance at every output time, with the
-//                                         rain and infiltration (a case with rain) and the
+//                                         rain and infiltration (a case with rain), the
+//                                         sources' volume (a case with sources) and the
 //                                         volume out through each open boundary group
 //   <name>_jams.csv                       jam statistics at every output time (spec 6.3)
 //   run.bin + state_NNNNNN.bin            the mesh once, the state at every output, for
@@ -30,11 +31,12 @@
 namespace flotsam {
 
 /// What the case adds to a run's files: the open boundary groups (pictures draw them open; the
-/// balance table has a column of the outflow through each) and whether it rains (the balance
-/// table's rain and infiltration columns).
+/// balance table has a column of the outflow through each), whether it rains (the balance
+/// table's rain and infiltration columns) and whether it has sources.
 struct RunLayout {
   std::vector<std::uint8_t> open_group;  // per mesh group: 1 inflow/outflow, 0 wall
   bool rain = false;
+  bool sources = false;
   std::vector<std::array<Vec2, 4>> decks;  // [m] bridge decks' footprints, for the pictures
 };
 
@@ -92,6 +94,7 @@ class RunOutput {
   std::string name_;
   std::vector<std::uint8_t> open_group_;  // per mesh group: 1 inflow/outflow, 0 wall
   bool rain_ = false;                     // the balance table has rain and infiltration columns
+  bool sources_ = false;                  // and a sources column
   PvdWriter flow_index_, body_index_;     // from the first file on, or when closed
   std::vector<double> times_;             // [s] of each output written, in order
   std::optional<RasterGrid> raster_grid_;

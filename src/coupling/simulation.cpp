@@ -104,6 +104,7 @@ RunLayout Simulation::run_layout() const {
   layout.open_group.assign(mesh_.group_names.size(), 0);
   for (int g : outflow_groups_) layout.open_group[g] = 1;
   layout.rain = case_.flow.rain.enabled;
+  layout.sources = !case_.flow.sources.empty();
   for (const Bridge& b : jam_geometry_.bridges) {
     if (!b.deck) continue;
     const Vec2 half = 0.5 * b.deck->width * b.downstream;  // [m]
@@ -349,11 +350,12 @@ std::string Simulation::summary() const {
                    : case_.time.mode == CouplingMode::one_way ? "one-way"
                                                               : "two-way");
   s += fmt::format(
-      "water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3{}{}\n", b.volume,
+      "water volume     {:.6g} m^3 (start {:.6g} m^3), net outflow {:.6g} m^3{}{}{}\n", b.volume,
       b.initial_volume, b.outflow,
       case_.flow.rain.enabled
           ? fmt::format(", rain {:.6g} m^3, infiltrated {:.6g} m^3", b.rain, b.infiltration)
           : "",
+      case_.flow.sources.empty() ? "" : fmt::format(", sources {:.6g} m^3", b.sources),
       b.lag != 0.0 ? fmt::format(", in BDF2's time lag {:.6g} m^3", b.lag) : "");
   s += fmt::format("water balance    {:.3g} m^3, relative {:.3g}\n", b.error(), b.relative_error());
   if (has_bodies_) {

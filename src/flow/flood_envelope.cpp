@@ -20,16 +20,15 @@ void FloodEnvelope::reset(int n, double wet_depth_threshold) {
 }
 
 void FloodEnvelope::update(const std::vector<double>& h, const std::vector<double>& hu,
-                           const std::vector<double>& hv, double t, double dt,
-                           double velocity_depth) {
+                           const std::vector<double>& hv, double t, double dt) {
   const int n = size();
 #pragma omp parallel for schedule(static) if (n >= 20000)
   for (int i = 0; i < n; ++i) {
     const double q = std::sqrt(hu[i] * hu[i] + hv[i] * hv[i]);  // H |u| [m^2/s]
     max_depth[i] = std::max(max_depth[i], h[i]);
     max_unit_discharge[i] = std::max(max_unit_discharge[i], q);
-    if (h[i] > velocity_depth) max_speed[i] = std::max(max_speed[i], q / h[i]);
     if (h[i] > wet_depth) {  // wet from the end of the step that wetted it
+      max_speed[i] = std::max(max_speed[i], q / h[i]);
       if (std::isnan(arrival[i]))
         arrival[i] = t;
       else

@@ -29,9 +29,10 @@ struct FloodEnvelope {
   int size() const { return static_cast<int>(max_depth.size()); }
 
   /// Takes in the state at time t [s], the end of a step of length dt [s]: depth h [m] and
-  /// discharge (hu, hv) [m^2/s] per cell; speeds only where h > velocity_depth [m].
+  /// discharge (hu, hv) [m^2/s] per cell; speeds only where wet (h > wet_depth): a film's
+  /// velocity is the numerics' (docs/model.md (M-15)), not a hazard.
   void update(const std::vector<double>& h, const std::vector<double>& hu,
-              const std::vector<double>& hv, double t, double dt, double velocity_depth);
+              const std::vector<double>& hv, double t, double dt);
 
   /// The envelopes as records `prefix`.envelope.* of a checkpoint; read back checked against n
   /// cells (an InputError naming the checkpoint otherwise).

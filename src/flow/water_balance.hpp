@@ -22,17 +22,19 @@ struct WaterBalance {
   double outflow = 0.0;               // volume out through all boundaries since t = 0 [m^3]
   double source = 0.0;                // volume added by source terms since t = 0 [m^3]
   double rain = 0.0;                  // volume of rain fallen on the domain since t = 0 [m^3]
+  double sources = 0.0;               // volume let in by flow.sources since t = 0 [m^3]
   double infiltration = 0.0;          // volume infiltrated since t = 0 [m^3]
   double lag = 0.0;                   // volume in BDF2's time lag [m^3] (theta-scheme: 0)
   std::vector<double> group_outflow;  // per mesh boundary group [m^3] (inflow negative)
   std::vector<double> group_rate;     // outflow rate of the last step per group [m^3/s]
 
-  /// V(t) - V(0) + outflow - source - rain + infiltration - lag [m^3].
+  /// V(t) - V(0) + outflow - source - rain - sources + infiltration - lag [m^3].
   double error() const {
-    return volume - initial_volume + outflow - source - rain + infiltration - lag;
+    return volume - initial_volume + outflow - source - rain - sources + infiltration - lag;
   }
-  /// The volume the error is measured against [m^3]: V(0), or V(t) or the rain when larger.
-  double reference_volume() const { return std::max({initial_volume, volume, rain}); }
+  /// The volume the error is measured against [m^3]: V(0), or V(t), the rain or the sources'
+  /// when larger.
+  double reference_volume() const { return std::max({initial_volume, volume, rain, sources}); }
   /// error() / reference_volume() [-] (0 when there is no water at all).
   double relative_error() const {
     const double V = reference_volume();
@@ -44,7 +46,7 @@ class ArchiveWriter;
 class ArchiveReader;
 
 /// The balance's sums as records `prefix`.balance, .group_outflow, .group_rate of a checkpoint
-/// (a checkpoint written before rain was counted holds no rain and infiltration: they read as 0).
+/// (a checkpoint written before rain or sources were counted holds none: they read as 0).
 void write_water_balance(ArchiveWriter& w, const std::string& prefix, const WaterBalance& b);
 WaterBalance read_water_balance(ArchiveReader& r, const std::string& prefix);
 

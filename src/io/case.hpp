@@ -60,7 +60,7 @@ struct FiniteVolumeConfig {
                          // largest wave speed at the cell's edges; up to 0.5 depths stay
                          // positive by construction, above a sub-step that makes one negative is
                          // retried at half the step (model.md (M-16))
-  double velocity_depth = 1e-3;  // H_eps [m]: below it velocities are desingularised (model.md)
+  double velocity_depth = 1e-5;  // H_eps [m]: below it velocities are desingularised (model.md)
 };
 
 /// Rain on the domain with a constant infiltration loss (flow.rain; finite-volume engine only,
@@ -73,6 +73,17 @@ struct RainConfig {
   std::shared_ptr<const Raster> raster;  // w [-] per pixel, >= 0, covering every cell; or none
   std::string raster_origin;             // "case.yaml:7: flow.rain.raster", for messages
   int line = 0;  // line of the key flow.rain in the case file, for messages (0: built in code)
+};
+
+/// Water let in inside the domain (flow.sources; docs/model.md "Sources", (M-24)): a discharge
+/// Q(t) >= 0 into the cell holding `point`, or spread over the cells whose centroids lie in
+/// `polygon` in proportion to their areas. It brings no momentum.
+struct FlowSource {
+  std::string name;           // the entry's `name`, or "flow.sources[k]"
+  std::vector<Vec2> polygon;  // [m] a simple polygon; empty: a point source
+  Vec2 point = Vec2::Zero();  // [m] of a point source
+  TimeSeries discharge;       // Q(t) [m^3/s] >= 0, a constant or a hydrograph
+  std::string origin;         // "case.yaml:12: flow.sources[0] (culvert)", for messages
 };
 
 /// A polygon with its own friction coefficient (flow.friction.zones): its outer ring and its
@@ -118,9 +129,17 @@ struct FlowConfig {
   bool coriolis = false;
   Vec2 wind = Vec2::Zero();  // W at 10 m [m/s]
   RainConfig rain;
+  std::vector<FlowSource> sources;
   double min_depth = 1e-3;  // H_min [m], friction denominator bound (spec 1.1)
-  double dry_depth = 1e-3;  // H_dry [m] (spec 1.5)
+  // H_dry [m] (spec 1.5): unset, the engine's default (dry_depth_or_default).
+  std::optional<double> dry_depth;
   std::vector<BoundaryCondition> boundaries;
+
+  /// H_dry [m]: the case's, else 1e-3 m for the FEM (spec 1.5) and 1e-5 m for the finite
+  /// volumes, whose cells are first order below it (docs/model.md "Thin films").
+  double dry_depth_or_default() const {
+    return dry_depth.value_or(engine == FlowEngineKind::fv ? 1e-5 : 1e-3);
+  }
 
   // Initial state: still water with eta linear in x between the two values (spec 8.2), or flat.
   double initial_eta_start = 0.0;  // eta at x = x_min [m]

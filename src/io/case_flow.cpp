@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "io/case_sections.hpp"
+#include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 
@@ -68,6 +69,35 @@ RainConfig read_rain(const YamlValue& value, const std::filesystem::path& case_f
           {rain.raster->grid().crs_wkt, fmt::format("the rain raster '{}'", rain.raster->path())});
   }
   return rain;
+}
+
+// Sources: a list of {name?, point: [x, y] | polygon: [[x, y], ...], discharge: Q or [[t, Q], ...]}
+// with Q >= 0 [m^3/s]. Where they fall on the cells is checked when the run starts
+// (flow/fv/flow_sources.hpp).
+std::vector<FlowSource> read_sources(const YamlValue& value) {
+  std::vector<FlowSource> sources;
+  const std::vector<YamlValue> items = value.list();
+  if (items.empty()) value.fail("expected a list of sources {point: [x, y] or polygon, discharge}");
+  for (const YamlValue& item : items) {
+    const YamlMap m = item.map();
+    FlowSource s;
+    s.name = m.text("name", fmt::format("flow.sources[{}]", sources.size()));
+    s.origin = m.has("name") ? fmt::format("{} ({})", item.origin(), s.name) : item.origin();
+    const std::string kind = m.only_one_of({"point", "polygon"});
+    if (kind.empty()) item.fail("expected 'point: [x, y]' or 'polygon: [[x, y], ...]' [m]");
+    if (kind == "point") {
+      s.point = m.get("point").vec2();
+    } else {
+      const YamlValue polygon = m.get("polygon");
+      for (const YamlValue& corner : polygon.list()) s.polygon.push_back(corner.vec2());
+      if (const std::string defect = polygon_defect(s.polygon); !defect.empty())
+        polygon.fail(defect);
+    }
+    s.discharge = m.get("discharge", "Q [m^3/s] >= 0, a number or a hydrograph [[t, Q], ...]")
+                      .series("t", Range::non_negative());
+    sources.push_back(std::move(s));
+  }
+  return sources;
 }
 
 // A velocity component of the initial state: a number or a formula, both kept as a formula;
@@ -177,8 +207,15 @@ FlowConfig read_flow(const YamlMap& m, const std::filesystem::path& case_folder,
   }
   if (m.has("wind")) flow.wind = m.get("wind").map().get("velocity", "W [m/s] as [x, y]").vec2();
   if (m.has("rain")) flow.rain = read_rain(m.get("rain"), case_folder, geodata);
+  if (const auto sources = m.find("sources")) {
+    if (flow.engine == FlowEngineKind::fem)
+      sources->fail(
+          "flow.sources are taken by 'engine: fv' only (the FEM engine has no sources: let the "
+          "water in through a discharge boundary, or use the finite-volume engine)");
+    flow.sources = read_sources(*sources);
+  }
   flow.min_depth = m.number("min_depth", flow.min_depth, Range::positive());
-  flow.dry_depth = m.number("dry_depth", flow.dry_depth, Range::positive());
+  if (const auto dry = m.find("dry_depth")) flow.dry_depth = dry->number(Range::positive());
   read_initial(m.get("initial", "the initial water surface").map(), flow);
 
   const YamlValue boundaries =

@@ -257,6 +257,49 @@ TEST(Simulation, BalanceTableHasTheRainAndTheInfiltration) {
   std::filesystem::remove_all(dir);
 }
 
+// A case with sources (finite-volume engine) has their column: in a closed channel a point
+// source of 2 m^3/s has let in 20 m^3 after 10 s, all of it in the volume; the summary names it.
+TEST(Simulation, BalanceTableHasTheSources) {
+  const auto dir = test::fresh_test_folder("flotsam_simulation_test");
+  Case c = channel_case(CouplingMode::one_way);
+  c.bodies.bodies.clear();
+  c.flow.engine = FlowEngineKind::fv;
+  for (BoundaryCondition& b : c.flow.boundaries)
+    b = {BoundaryCondition::Kind::wall, b.group, {}, {}};
+  FlowSource culvert;
+  culvert.point = Vec2(0.3 * length, 0.5 * width);
+  culvert.discharge = TimeSeries(2.0);  // [m^3/s]
+  culvert.origin = "test: flow.sources[0]";
+  c.flow.sources = {culvert};
+  c.time.end = 10.0;
+  c.output.interval = 5.0;
+  std::string summary;
+  {
+    Simulation s(
+        c, channel_mesh(),
+        {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+    s.run();
+    summary = s.summary();
+  }
+  std::ifstream csv(dir / "channel_balance.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  EXPECT_EQ(
+      header,
+      "t [s],volume [m^3],outflow [m^3],sources [m^3],balance error [m^3],relative error [-]");
+  while (std::getline(csv, line)) last = line;
+  std::vector<double> row;
+  std::stringstream fields(last);
+  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  ASSERT_EQ(row.size(), 6u);
+  EXPECT_EQ(row[0], 10.0);
+  EXPECT_NEAR(row[3], 20.0, 1e-8 * 20.0);
+  EXPECT_NEAR(row[1], H0 * length * width + 20.0, 1e-8 * H0 * length * width);
+  EXPECT_LE(std::abs(row[5]), 1e-12);
+  EXPECT_THAT(summary, ::testing::HasSubstr("sources 20 m^3"));
+  std::filesystem::remove_all(dir);
+}
+
 // Gauges (output.probes) on a run of the finite-volume engine: a row at t = 0 and at every
 // coupling step, and the last row is what the engine's field gives at the probe at the end (to
 // the CSV's 9 digits).

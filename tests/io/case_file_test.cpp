@@ -346,7 +346,8 @@ TEST(CaseFile, EngineIsFemByDefault) {
   EXPECT_EQ(c.flow.engine, FlowEngineKind::fem);
   EXPECT_EQ(c.flow.fv.order, 2);
   EXPECT_EQ(c.flow.fv.courant, 0.9);
-  EXPECT_EQ(c.flow.fv.velocity_depth, 1e-3);
+  EXPECT_EQ(c.flow.fv.velocity_depth, 1e-5);
+  EXPECT_EQ(c.flow.dry_depth_or_default(), 1e-3);  // the FEM's (spec 1.5)
   EXPECT_TRUE(c.flow.initial_eta.empty());
   EXPECT_TRUE(c.flow.initial_u.empty());
   EXPECT_TRUE(c.flow.initial_v.empty());
@@ -370,6 +371,11 @@ TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
   EXPECT_EQ(d.flow.fv.order, 2);  // the defaults
   EXPECT_EQ(d.flow.fv.courant, 0.9);
   EXPECT_EQ(d.flow.fv.cells, FvCells::elements);
+  EXPECT_EQ(d.flow.dry_depth_or_default(), 1e-5);  // the finite volumes' (docs/model.md (M-15))
+  EXPECT_EQ(
+      parse_case(edited("  initial:", "  engine: fv\n  dry_depth: 0.002\n  initial:"), "case.yaml")
+          .flow.dry_depth_or_default(),
+      0.002);
   EXPECT_EQ(
       parse_case(edited("  initial:", "  engine: fv\n  fv: {courant: 1}\n  initial:"), "case.yaml")
           .flow.fv.courant,
@@ -657,6 +663,51 @@ TEST(CaseFileError, RainIsChecked) {
   EXPECT_EQ(error_of(rain("20")), "case.yaml:6: flow.rain: expected a map of keys, got '20'");
 }
 
+TEST(CaseFile, SourcesArePointsOrPolygonsWithADischarge) {
+  const Case c = parse_case(edited("  initial:", R"(  engine: fv
+  sources:
+    - {name: culvert, point: [20, 5], discharge: 1.5}
+    - polygon: [[40, 2], [50, 2], [50, 8]]
+      discharge: [[0, 0], [600, 12], [1800, 0]]
+  initial:)"),
+                            "case.yaml");
+  ASSERT_EQ(c.flow.sources.size(), 2u);
+  EXPECT_EQ(c.flow.sources[0].name, "culvert");
+  EXPECT_EQ(c.flow.sources[0].origin, "case.yaml:7: flow.sources[0] (culvert)");
+  EXPECT_EQ(c.flow.sources[0].point, Vec2(20.0, 5.0));
+  EXPECT_TRUE(c.flow.sources[0].polygon.empty());
+  EXPECT_EQ(c.flow.sources[0].discharge(100.0), 1.5);
+  EXPECT_EQ(c.flow.sources[1].name, "flow.sources[1]");
+  EXPECT_EQ(c.flow.sources[1].origin, "case.yaml:8: flow.sources[1]");
+  EXPECT_EQ(c.flow.sources[1].polygon.size(), 3u);
+  EXPECT_EQ(c.flow.sources[1].discharge(300.0), 6.0);
+}
+
+TEST(CaseFileError, SourcesAreChecked) {
+  const auto sources = [](const std::string& list, const std::string& engine = "fv") {
+    return edited("  initial:", "  engine: " + engine + "\n  sources: " + list + "\n  initial:");
+  };
+  EXPECT_EQ(error_of(sources("[{point: [20, 5], discharge: -1}]")),
+            "case.yaml:6: flow.sources[0].discharge: expected a number >= 0, got -1");
+  EXPECT_EQ(error_of(sources("[{point: [20, 5], polygon: [[0, 0], [1, 0], [1, 1]], discharge: "
+                             "1}]")),
+            "case.yaml:6: flow.sources[0].polygon: give either 'point' (line 6) or 'polygon', not "
+            "both");
+  EXPECT_EQ(error_of(sources("[{discharge: 1}]")),
+            "case.yaml:6: flow.sources[0]: expected 'point: [x, y]' or 'polygon: [[x, y], ...]' "
+            "[m]");
+  EXPECT_EQ(error_of(sources("[{point: [20, 5]}]")),
+            "case.yaml:6: flow.sources[0].discharge: missing; this key is required: Q [m^3/s] >= "
+            "0, a number or a hydrograph [[t, Q], ...]");
+  EXPECT_EQ(error_of(sources("[]")),
+            "case.yaml:6: flow.sources: expected a list of sources {point: [x, y] or polygon, "
+            "discharge}");
+  EXPECT_EQ(error_of(sources("[{point: [20, 5], discharge: 1}]", "fem")),
+            "case.yaml:6: flow.sources: flow.sources are taken by 'engine: fv' only (the FEM "
+            "engine has no sources: let the water in through a discharge boundary, or use the "
+            "finite-volume engine)");
+}
+
 TEST(CaseFile, RainRasterIsReadFromTheCaseFolder) {
   const auto folder = test::scratch_path("flotsam_case_rain_raster");
   std::filesystem::create_directories(folder);
@@ -787,7 +838,7 @@ TEST(CaseFileError, UnknownKeyNamesTheNearestAllowedOne) {
       error_of(edited("  initial: {eta: 1.0}", "  initial: {eta: 1.0}\n  gravty: 9.81")),
       "case.yaml:6: flow.gravty: unknown key (did you mean 'gravity'?); allowed here: "
       "engine, fv, scheme, gravity, density, viscosity, reynolds, friction, turbulence, coriolis, "
-      "wind, rain, min_depth, dry_depth, initial, boundaries");
+      "wind, rain, sources, min_depth, dry_depth, initial, boundaries");
   EXPECT_EQ(error_of(appended("nmae: river\n")),
             "case.yaml:12: nmae: unknown key (did you mean 'name'?); allowed here: name, mesh, "
             "bed, bridges, flow, time, bodies, output, crs");

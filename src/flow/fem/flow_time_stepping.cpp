@@ -257,11 +257,11 @@ void ShallowWaterSolver::check_state(const FlowState& s, double t) const {
           "{:.6g}) (instability: reduce the time step or refine the mesh)",
           t, tag(i), p.x(), p.y());
     const double H = eta - z_b_[i];
-    if (H < case_.flow.dry_depth)
+    if (H < case_.flow.dry_depth_or_default())
       throw_run_error(
           "flow: t = {:.6g} s: node {} ({:.6g}, {:.6g}) dried: depth H = {:.6g} m "
           "below the dry depth {} m (the FEM engine needs a wet domain, spec 1.5)",
-          t, tag(i), p.x(), p.y(), H, case_.flow.dry_depth);
+          t, tag(i), p.x(), p.y(), H, case_.flow.dry_depth_or_default());
   }
 }
 

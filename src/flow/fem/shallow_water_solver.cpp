@@ -153,7 +153,7 @@ void ShallowWaterSolver::set_state(const FlowState& s, const FlowState* before) 
     if (node < mesh_.vertex_count) return st.eta[node] - z_b_[node];
     return 0.0;  // mid nodes are checked through check_state
   };
-  const double H_dry = case_.flow.dry_depth;
+  const double H_dry = case_.flow.dry_depth_or_default();
   for (int j = 0; j < mesh_.vertex_count; ++j)
     if (!(depth_at(j, s) >= H_dry))
       throw_input_error(

@@ -24,11 +24,10 @@ FvEngine::FvEngine(const Mesh& mesh, const Case& flow_case, std::shared_ptr<cons
 void FvEngine::initialize() {
   solver_.initialize();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);
-  envelope_.update(solver_.state().h, solver_.state().hu, solver_.state().hv, 0.0, 0.0,
-                   case_.flow.fv.velocity_depth);
+  envelope_.update(solver_.state().h, solver_.state().hu, solver_.state().hv, 0.0, 0.0);
   solver_.set_sub_step_observer([this](double t, double dt) {
     const ConservedState& U = solver_.state();
-    envelope_.update(U.h, U.hu, U.hv, t, dt, case_.flow.fv.velocity_depth);
+    envelope_.update(U.h, U.hu, U.hv, t, dt);
   });
   field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed(), locator_);
   field_->reset_to_state();
@@ -66,7 +65,7 @@ void FvEngine::settle(const TimeConfig& time) {
   solver_.set_state(steady);
   solver_.restart_water_balance();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);  // the run starts now
-  envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0, case_.flow.fv.velocity_depth);
+  envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0);
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -213,9 +212,10 @@ std::string FvEngine::summary() const {
                                                 s.smallest, s.count > 0 ? s.total / s.count : 0.0)
                                   : std::string("no Courant limit (the water was dry and still)");
   return fmt::format(
-      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet {:.1f} % "
-      "of the area\n",
-      solver_.cells().cell_count, s.count, s.rejected, courant, 100.0 * solver_.wet_fraction());
+      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet (deeper "
+      "than {:g} m) {:.1f} % of the area\n",
+      solver_.cells().cell_count, s.count, s.rejected, courant, case_.output.wet_depth,
+      100.0 * solver_.wet_fraction());
 }
 
 std::vector<std::string> FvEngine::write_envelope_rasters(const std::string& prefix,

@@ -45,10 +45,11 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
       cells_(*shared_cells_),
       boundaries_(FvBoundaries::resolve(mesh, flow_case.flow)),
       friction_(FrictionModel::from(flow_case.flow)),
-      rain_(flow_case.flow.rain, cells_) {
+      rain_(flow_case.flow.rain, cells_),
+      sources_(flow_case.flow.sources, mesh, cells_) {
   const FlowConfig& flow = flow_case.flow;
   g_ = flow.gravity;
-  dry_depth_ = flow.dry_depth;
+  dry_depth_ = flow.dry_depth_or_default();
   velocity_depth_ = flow.fv.velocity_depth;
   coriolis_ =
       flow.coriolis ? 2.0 * earth_rotation_rate * std::sin(flow.latitude_deg * pi / 180.0) : 0.0;
@@ -59,6 +60,7 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   for (auto* a : {&flux_mass_, &flux_x_, &flux_y_, &side_left_, &side_right_, &edge_speed_})
     a->assign(m, 0.0);
   for (auto* a : {&rate_h_, &rate_hu_, &rate_hv_}) a->assign(n, 0.0);
+  if (sources_.any()) source_depth_.assign(n, 0.0);
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
@@ -127,7 +129,7 @@ double FiniteVolumeSolver::wet_fraction() const {
   double wet = 0.0, all = 0.0;
   for (int i = 0; i < cells_.cell_count; ++i) {
     all += cells_.area[i];
-    if (U_.h[i] > dry_depth_) wet += cells_.area[i];
+    if (U_.h[i] > case_.output.wet_depth) wet += cells_.area[i];
   }
   return wet / all;
 }
@@ -337,19 +339,21 @@ double FiniteVolumeSolver::courant_step() const {
 }
 
 // out = a U + b (y + dt L(y) + R), L evaluated last (rate_), R the sub-step's rain
-// (rain_depth_ w_i): the Runge-Kutta stages. Returns true when a depth came out negative or a
-// value not finite (clamp_round_off then looks at every cell). The balance is counted once per
-// sub-step, with the weights of the whole step: U^{n+1} = U^n + dt/2 (L(U^n) + L(U1)) + R, so
-// each stage's boundary outflow counts half (the rain is counted whole by advance).
+// (rain_depth_ w_i) and sources (source_depth_): the Runge-Kutta stages. Returns true when a depth
+// came out negative or a value not finite (clamp_round_off then looks at every cell). The balance
+// is counted once per sub-step, with the weights of the whole step: U^{n+1} = U^n + dt/2 (L(U^n) +
+// L(U1)) + R, so each stage's boundary outflow counts half (the rain is counted whole by advance).
 bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState& y,
                                    ConservedState& out, double a, double b, double dt) {
   const int n = cells_.cell_count;
   const double rain = rain_depth_;  // [m] times w_i
   const std::vector<double>& w = rain_.weights();
+  const double* source = sources_.any() ? source_depth_.data() : nullptr;  // [m]
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
   for (int i = 0; i < n; ++i) {
-    out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i] + rain * w[i]);
+    const double R = rain * w[i] + (source ? source[i] : 0.0);
+    out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i] + R);
     out.hu[i] = a * U.hu[i] + b * (y.hu[i] + dt * rate_hu_[i]);
     out.hv[i] = a * U.hv[i] + b * (y.hv[i] + dt * rate_hv_[i]);
     suspect = suspect || !(out.h[i] >= 0.0) || !std::isfinite(out.hu[i] + out.hv[i]);
@@ -369,8 +373,9 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // domain dry and still has no Courant step (no wave speed): rain on it takes what is left of dt
 // in one sub-step, halved on retry like the others.
 //
-// Rain (M-17) enters both stages as the constant R = w_i int_t^{t+dt} r: Heun's weights add it
-// once, exactly the hyetograph's depth, and since R >= 0 it never makes a depth negative.
+// Rain (M-17) and sources (M-24) enter both stages as the constant R = w_i int_t^{t+dt} r +
+// int Q_s dt / A_s: Heun's weights add it once, exactly the hyetograph's depth and the
+// hydrographs' volume, and since R >= 0 it never makes a depth negative.
 // Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
   const double t_end = U_.time + dt;
@@ -386,6 +391,7 @@ void FiniteVolumeSolver::advance(double dt) {
     const double dt_courant = stage_courant_step_;
     const double h = shrink * std::min(dt_courant, t_end - t);
     rain_depth_ = rain_.depth(t, t + h);
+    const double source_volume = sources_.any() ? sources_.depths(t, t + h, source_depth_) : 0.0;
     int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5) : -1;
     // Stage 2: U^{n+1} = (U + U1 + dt L(U1) + R) / 2, then infiltration and friction.
     if (bad < 0) {
@@ -400,6 +406,7 @@ void FiniteVolumeSolver::advance(double dt) {
       continue;
     }
     balance_.rain += rain_depth_ * rain_.weighted_area();
+    balance_.sources += source_volume;
     apply_infiltration(U1_, h);
     apply_friction(U1_, h);
     std::swap(U_, U1_);

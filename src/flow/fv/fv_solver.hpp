@@ -11,7 +11,8 @@
 // (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
 // states, fv_boundary.hpp; the edges under bridge decks, deck_flux.hpp) -> sum per cell with the
 // bed-slope, Coriolis, wind and body sources; R = (w_i int r dt, 0, 0) the rain of the sub-step and
-// infiltration its loss (rain_source.hpp, (M-17)).
+// infiltration its loss (rain_source.hpp, (M-17)), plus the sub-step's depth of the sources
+// (flow_sources.hpp, (M-24)).
 #include <functional>
 #include <memory>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "flow/friction.hpp"
 #include "flow/fv/cell_mesh.hpp"
 #include "flow/fv/deck_flux.hpp"
+#include "flow/fv/flow_sources.hpp"
 #include "flow/fv/fv_boundary.hpp"
 #include "flow/fv/rain_source.hpp"
 #include "flow/fv/reconstruction.hpp"
@@ -75,6 +77,7 @@ class FiniteVolumeSolver {
   /// (M-17): one per cell, finite and >= 0; 1 everywhere unless set (rain varying over the domain).
   void set_rain_weights(std::vector<double> weights) { rain_.set_weights(std::move(weights)); }
   const RainSource& rain() const { return rain_; }
+  const FlowSources& sources() const { return sources_; }
 
   /// The state's cell values and limited gradients (what the bodies sample).
   void fill_field(CellField& field) const;
@@ -94,7 +97,7 @@ class FiniteVolumeSolver {
   void restore_sub_steps(const SubStepStats& s) { stats_ = s; }
   /// The Courant step [s] of the current state (M-16) (infinite when all is dry and still).
   double courant_step() const;
-  double wet_fraction() const;                     // [-] of the cells' area
+  double wet_fraction() const;  // [-] of the cells' area deeper than output.wet_depth
   double dry_depth() const { return dry_depth_; }  // [m]
 
  private:
@@ -135,6 +138,8 @@ class FiniteVolumeSolver {
   std::vector<Vec2> cell_force_;  // [N] body reactions
   RainSource rain_;
   double rain_depth_ = 0.0;  // [m] int r dt over the current sub-step (times w_i per cell)
+  FlowSources sources_;
+  std::vector<double> source_depth_;  // [m] per cell, the sources' over the current sub-step
   // Per edge: flux through it along its normal (mass [m^2/s], momentum [m^3/s^2]), and the
   // hydrostatic corrections g/2 (h_e^2 - h*_e^2) of its two sides [m^3/s^2].
   mutable std::vector<double> flux_mass_, flux_x_, flux_y_, side_left_, side_right_;
