@@ -28,6 +28,9 @@ struct Expression::Impl {
 
 namespace {
 
+// The longest formula muParser takes [characters].
+constexpr std::size_t longest_formula = mu::MaxLenExpression - 1;
+
 // muParser's messages end with "found at position N" (counted from 0); the message built here
 // gives the position counted from 1 instead, so that part is dropped.
 std::string without_position(const std::string& message) {
@@ -35,15 +38,22 @@ std::string without_position(const std::string& message) {
   return std::regex_replace(message, suffix, "");
 }
 
+// A formula as messages quote it: whole up to `room` characters, else its start and its length,
+// so that a long formula's message stays readable.
+std::string shown(const std::string& text, std::size_t room = 120) {
+  if (text.size() <= room) return text;
+  return fmt::format("{}... ({} characters)", text.substr(0, room - 20), text.size());
+}
+
 [[noreturn]] void throw_syntax_error(const std::string& origin, const std::string& text,
                                      const mu::ParserError& error) {
   const int pos = error.GetPos();
   const std::string message = without_position(error.GetMsg());
-  if (pos < 0) throw_input_error("{}: syntax error in '{}': {}", origin, text, message);
+  if (pos < 0) throw_input_error("{}: syntax error in '{}': {}", origin, shown(text), message);
   if (static_cast<std::size_t>(pos) >= text.size())
-    throw_input_error("{}: syntax error at the end of '{}': {}", origin, text, message);
-  throw_input_error("{}: syntax error in '{}' at character {} ('{}'): {}", origin, text, pos + 1,
-                    text.substr(static_cast<std::size_t>(pos)), message);
+    throw_input_error("{}: syntax error at the end of '{}': {}", origin, shown(text), message);
+  throw_input_error("{}: syntax error in '{}' at character {} ('{}'): {}", origin, shown(text),
+                    pos + 1, shown(text.substr(static_cast<std::size_t>(pos)), 40), message);
 }
 
 }  // namespace
@@ -57,6 +67,11 @@ Expression::Expression(std::string text, std::string origin, bool uses_z)
     return std::isspace(static_cast<unsigned char>(c));
   });
   if (blank) throw_input_error("{}: expected a formula in x and y, got an empty text", e.origin);
+  if (e.text.size() > longest_formula)
+    throw_input_error(
+        "{}: the formula '{}' is longer than the {} characters a formula may hold (the limit of "
+        "muParser, which reads it): give the field as a raster or a table instead",
+        e.origin, shown(e.text), longest_formula);
   std::vector<std::string> unknown;
   try {
     // muParser built with GCC defines _pi to 12 digits only; both constants are redefined exact.
@@ -75,7 +90,7 @@ Expression::Expression(std::string text, std::string origin, bool uses_z)
   if (!unknown.empty()) {
     throw_input_error("{}: unknown variable{} {} in '{}'; a formula may use only {} [m]", e.origin,
                       unknown.size() > 1 ? "s" : "",
-                      fmt::format("'{}'", fmt::join(unknown, "', '")), e.text,
+                      fmt::format("'{}'", fmt::join(unknown, "', '")), shown(e.text),
                       uses_z ? "x, y and z (the terrain raster's elevation)" : "x and y");
   }
 }
@@ -100,12 +115,12 @@ double Expression::operator()(double x, double y, double z) const {
   try {
     value = e.parser.Eval();
   } catch (const mu::ParserError& error) {
-    throw_input_error("{}: '{}' cannot be evaluated at (x, y) = ({}, {}) m: {}", e.origin, e.text,
-                      x, y, without_position(error.GetMsg()));
+    throw_input_error("{}: '{}' cannot be evaluated at (x, y) = ({}, {}) m: {}", e.origin,
+                      shown(e.text), x, y, without_position(error.GetMsg()));
   }
   if (!std::isfinite(value)) {
     throw_input_error("{}: '{}' is not finite at (x, y) = ({}, {}) m: its value is {}", e.origin,
-                      e.text, x, y, std::isnan(value) ? "nan" : fmt::format("{}", value));
+                      shown(e.text), x, y, std::isnan(value) ? "nan" : fmt::format("{}", value));
   }
   return value;
 }

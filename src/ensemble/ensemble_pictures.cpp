@@ -42,7 +42,7 @@ struct Canvas {
   }
   void save(const std::string& path) const {
     cairo_surface_flush(surface.get());
-    if (cairo_surface_write_to_png(surface.get(), path.c_str()) != CAIRO_STATUS_SUCCESS)
+    if (write_png_whole(surface.get(), path) != CAIRO_STATUS_SUCCESS)
       throw_run_error("could not write the picture '{}'", path);
   }
 };

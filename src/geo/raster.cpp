@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <fmt/format.h>
+
 #include "core/error.hpp"
 #include "geo/gdal_support.hpp"
 
@@ -163,16 +165,26 @@ bool same_coordinate_system(const std::string& a, const std::string& b) {
          sa.IsSame(&sb);
 }
 
+// Written under `path`.part and renamed when whole: a run killed while writing leaves the
+// previous file (or none), never a truncated one that reads as nodata.
 void write_geotiff(const std::string& path, const RasterGrid& grid,
                    const std::vector<double>& values, double nodata) {
   register_drivers();
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   if (!driver) throw_run_error("GDAL has no GeoTIFF driver: cannot write '{}'", path);
+  const std::string part = path + ".part";
+  const auto fail = [&](const std::string& what) {
+    const std::string gdal = CPLGetLastErrorMsg();
+    std::error_code ignored;
+    if (std::filesystem::is_regular_file(part, ignored)) std::filesystem::remove(part, ignored);
+    throw_run_error("could not write '{}': {}{}", path, what,
+                    gdal.empty() ? "" : fmt::format(" ({})", gdal));
+  };
   char** options = nullptr;
   options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");
-  Dataset d(driver->Create(path.c_str(), grid.columns, grid.rows, 1, GDT_Float64, options));
+  Dataset d(driver->Create(part.c_str(), grid.columns, grid.rows, 1, GDT_Float64, options));
   CSLDestroy(options);
-  if (!d) throw_run_error("could not create '{}' ({})", path, CPLGetLastErrorMsg());
+  if (!d) fail(fmt::format("could not create '{}'", part));
   std::array<double, 6> transform = grid.transform;
   d->SetGeoTransform(transform.data());
   if (!grid.crs_wkt.empty()) {
@@ -186,7 +198,13 @@ void write_geotiff(const std::string& path, const RasterGrid& grid,
     if (std::isnan(v)) v = nodata;
   if (band->RasterIO(GF_Write, 0, 0, grid.columns, grid.rows, out.data(), grid.columns, grid.rows,
                      GDT_Float64, 0, 0) != CE_None)
-    throw_run_error("could not write the values of '{}' ({})", path, CPLGetLastErrorMsg());
+    fail("the values were not written");
+  CPLErrorReset();
+  d.reset();  // closes the file, writing what GDAL still holds
+  if (CPLGetLastErrorType() >= CE_Failure) fail("the file was not closed whole");
+  std::error_code error;
+  std::filesystem::rename(part, path, error);
+  if (error) fail(error.message());
 }
 
 }  // namespace flotsam

@@ -2,6 +2,7 @@
 // Small Cairo helpers shared by the layers: ownership, colours, text placement.
 #include <cairo.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -17,6 +18,20 @@ struct CairoContextDeleter {
 };
 using CairoSurface = std::unique_ptr<cairo_surface_t, CairoSurfaceDeleter>;
 using CairoContext = std::unique_ptr<cairo_t, CairoContextDeleter>;
+
+/// Writes the surface as a PNG under `path`.part and renames it when whole, so that a kill
+/// leaves the previous picture or none, never a truncated one. Cairo's status, and
+/// CAIRO_STATUS_WRITE_ERROR when the rename fails (the .part then removed).
+inline cairo_status_t write_png_whole(cairo_surface_t* surface, const std::string& path) {
+  const std::string part = path + ".part";
+  cairo_status_t status = cairo_surface_write_to_png(surface, part.c_str());
+  std::error_code error;
+  if (status == CAIRO_STATUS_SUCCESS) std::filesystem::rename(part, path, error);
+  if (status == CAIRO_STATUS_SUCCESS && error) status = CAIRO_STATUS_WRITE_ERROR;
+  if (status != CAIRO_STATUS_SUCCESS && std::filesystem::is_regular_file(part, error))
+    std::filesystem::remove(part, error);
+  return status;
+}
 
 /// Colours of the machinery around the field.
 inline constexpr Colour ink{30, 30, 30};             // text, outlines, arrows

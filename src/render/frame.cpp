@@ -67,7 +67,7 @@ Image render_image(const Scene& scene) {
 
 void render_png(const Scene& scene, const std::string& path) {
   const CairoSurface surface = draw_scene(scene);
-  const cairo_status_t status = cairo_surface_write_to_png(surface.get(), path.c_str());
+  const cairo_status_t status = write_png_whole(surface.get(), path);
   if (status != CAIRO_STATUS_SUCCESS) {
     throw_input_error("cannot write the picture '{}': {} (does its folder exist, is it writable?)",
                       path, cairo_status_to_string(status));

@@ -85,6 +85,25 @@ TEST(ExpressionError, SyntaxErrorNamesTheOriginAndThePosition) {
             "case.yaml:12: flow.initial.eta: expected a formula in x and y, got an empty text");
 }
 
+// A formula longer than muParser takes is refused as such (not as a syntax error), and long
+// formulas are quoted by their start and length: the message stays a line.
+TEST(ExpressionError, LongFormulasAreNamedShort) {
+  std::string long_sum = "x";
+  while (long_sum.size() < 50000) long_sum += " + 1";
+  EXPECT_EQ(error_of([&] { Expression(long_sum, origin); }),
+            "case.yaml:12: flow.initial.eta: the formula '" + long_sum.substr(0, 100) + "... (" +
+                std::to_string(long_sum.size()) +
+                " characters)' is longer than the 19999 characters a formula may hold "
+                "(the limit of muParser, which reads it): give the field as a raster or a table "
+                "instead");
+  std::string bad = long_sum.substr(0, 5000) + " + * 2";  // within the limit, wrong at its end
+  const std::string message = error_of([&] { Expression(bad, origin); });
+  EXPECT_LT(message.size(), 300u) << message;
+  EXPECT_EQ(message, "case.yaml:12: flow.initial.eta: syntax error in '" + bad.substr(0, 100) +
+                         "... (5006 characters)' at character 5004 ('* 2'): Unexpected operator "
+                         "\"*\"");
+}
+
 TEST(ExpressionError, UnknownVariablesAreNamed) {
   EXPECT_EQ(error_of([] { Expression("x + t", origin); }),
             "case.yaml:12: flow.initial.eta: unknown variable 't' in 'x + t'; a formula may use "

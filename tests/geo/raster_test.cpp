@@ -1,7 +1,9 @@
 // Rasters (geo/raster.hpp): bilinear sampling exact on planes and bilinear patches over the whole
-// extent, nodata and outside, GeoTIFF round trip of values, georeferencing and coordinate system.
+// extent, nodata and outside, GeoTIFF round trip of values, georeferencing and coordinate system,
+// and a GeoTIFF replaced whole or not at all.
 #include "geo/raster.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
@@ -10,6 +12,7 @@
 #include <fstream>
 #include <limits>
 
+#include "../support/scratch_path.hpp"
 #include "core/error.hpp"
 
 namespace flotsam {
@@ -77,6 +80,28 @@ TEST(Raster, NoValueOutsideTheExtentOrNextToNodata) {
   EXPECT_EQ(*r.bilinear(g.centre(0, 0)), 1.0);
   EXPECT_FALSE(r.nearest(g.centre(3, 2)));
   EXPECT_EQ(*r.nearest(g.centre(4, 2)), 1.0);
+}
+
+// A GeoTIFF is written under <path>.part and renamed when whole: no .part is left, and a write
+// that cannot finish (here its .part cannot be created: a folder holds the name) leaves the
+// previous file as it was, and says which file it could not write.
+TEST(Raster, GeoTiffIsReplacedWholeOrNotAtAll) {
+  const fs::path dir = test::fresh_test_folder("flotsam_raster_atomic_test");
+  const RasterGrid g = small_grid();
+  const std::string path = (dir / "max_depth.tif").string();
+  write_geotiff(path, g, std::vector<double>(35, 1.5));
+  EXPECT_FALSE(fs::exists(path + ".part"));
+  fs::create_directories(path + ".part");  // the next write cannot create its .part
+  try {
+    write_geotiff(path, g, std::vector<double>(35, 2.5));
+    FAIL() << "the write could not create its .part, yet reported no error";
+  } catch (const RunError& e) {
+    EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("could not write '" + path + "'"));
+  }
+  const Raster before = Raster::read(path, "test");
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 7; ++c) EXPECT_EQ(before.at(c, r), 1.5);
+  fs::remove_all(dir);
 }
 
 TEST(Raster, GeoTiffRoundTripKeepsValuesGeoreferencingAndCoordinateSystem) {

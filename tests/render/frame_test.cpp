@@ -256,6 +256,27 @@ TEST(Frame, UnwritablePathIsNamed) {
   }
 }
 
+// A picture is written under <path>.part and renamed when whole: no .part is left, and a write
+// that cannot finish (its .part cannot be created: a folder holds the name) leaves the previous
+// picture as it was.
+TEST(Frame, PngIsReplacedWholeOrNotAtAll) {
+  RampScene ramp;
+  const fs::path path = test::scratch_path("flotsam_render_frame_whole.png");
+  fs::remove_all(path.string() + ".part");
+  render_png(ramp.scene, path.string());
+  EXPECT_FALSE(fs::exists(path.string() + ".part"));
+  const auto size = fs::file_size(path);
+  fs::create_directories(path.string() + ".part");
+  ramp.scene.width = 240;  // a different picture
+  EXPECT_THROW(render_png(ramp.scene, path.string()), InputError);
+  EXPECT_EQ(fs::file_size(path), size);
+  cairo_surface_t* png = cairo_image_surface_create_from_png(path.c_str());
+  EXPECT_EQ(cairo_image_surface_get_width(png), 480);
+  cairo_surface_destroy(png);
+  fs::remove_all(path.string() + ".part");
+  fs::remove(path);
+}
+
 TEST(Frame, FieldOfTheWrongLengthIsNamed) {
   RampScene ramp;
   ramp.scene.field.values.resize(7);
