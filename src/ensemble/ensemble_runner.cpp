@@ -36,16 +36,6 @@ namespace {
 
 constexpr const char* manifest_file = "ensemble.txt";
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw_input_error("cannot open the case file '{}': {}", path,
-                      fs::exists(path) ? "not readable" : "no such file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// FNV-1a, 64 bits: the fingerprint of the case an ensemble folder holds.
 std::uint64_t fingerprint(const std::string& text) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -76,7 +66,10 @@ std::string prepare_ensemble_directory(const fs::path& directory, const std::str
           "output folder '{}' is not empty and holds no ensemble ({} is missing); choose another "
           "folder",
           directory.string(), manifest_file);
-    if (read_text(path.string()) == manifest && !overwrite) return "resumed";
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream held;
+    held << in.rdbuf();
+    if (held.str() == manifest && !overwrite) return "resumed";
     if (!overwrite)
       throw_input_error(
           "output folder '{}' holds an ensemble of another case or member count; add --overwrite "
@@ -151,7 +144,7 @@ struct Plan {
 
 Plan make_plan(const EnsembleOptions& options) {
   Plan plan;
-  const std::string text = read_text(options.case_file);
+  const std::string text = read_case_text(options.case_file);
   const SplitCaseText split = split_ensemble_text(text);
   plan.config = parse_ensemble(split.ensemble_text, options.case_file);
   if (options.members > 0) plan.config.members = options.members;

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/special_file.hpp"
 #include "io/case_digest.hpp"
 #include "io/case_sections.hpp"
 #include "io/yaml_reader.hpp"
@@ -401,7 +402,9 @@ Case parse_case(const std::string& text, const std::string& file_name) {
   return c;
 }
 
-Case read_case(const std::string& path) {
+std::string read_case_text(const std::string& path) {
+  if (const std::string kind = special_file_kind(path); !kind.empty())
+    throw_input_error("the case file '{}' is {}, not a file: flotsam reads it whole", path, kind);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw_input_error("cannot open the case file '{}': {}", path,
@@ -409,7 +412,11 @@ Case read_case(const std::string& path) {
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_case(text.str(), path);
+  return text.str();
+}
+
+Case read_case(const std::string& path) {
+  return parse_case(read_case_text(path), path);
 }
 
 void check_case_against_mesh(const Case& c, const std::vector<std::string>& mesh_groups) {

@@ -8,6 +8,10 @@
 
 namespace flotsam {
 
+/// The text of the case file at `path`: an InputError naming it when it cannot be opened or is
+/// not a file (a named pipe, a device).
+std::string read_case_text(const std::string& path);
+
 /// Reads and checks the case file at `path`. Relative paths inside it (mesh.file) are resolved
 /// against the case file's folder.
 Case read_case(const std::string& path);

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/special_file.hpp"
 
 namespace flotsam {
 
@@ -331,6 +332,9 @@ std::vector<std::pair<std::string, YamlValue>> YamlMap::entries() const {
 std::string YamlValue::input_path(const std::string& case_folder) const {
   std::filesystem::path file = text();
   if (file.is_relative()) file = (std::filesystem::path(case_folder) / file).lexically_normal();
+  if (const std::string kind = special_file_kind(file); !kind.empty())
+    fail(fmt::format("'{}' is {}, not a file: flotsam reads its inputs whole from files",
+                     file.string(), kind));
   document_->input_files_.emplace_back(path_, file.string());
   return file.string();
 }

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/special_file.hpp"
 
 namespace flotsam {
 namespace {
@@ -641,6 +642,8 @@ MshCounts check_msh(const std::string& path) {
         "{}: a Gmsh mesh file's name must end in .msh or .msh2 (Gmsh chooses its "
         "reader by the name: another ending may be read as another format)",
         path);
+  if (const std::string kind = special_file_kind(path); !kind.empty())
+    throw_input_error("{}: the mesh file is {}, not a file: flotsam reads it whole", path, kind);
   std::ifstream file(path, std::ios::binary);
   if (!file)
     throw_input_error("{}: cannot open the mesh file (it does not exist or is not readable)", path);

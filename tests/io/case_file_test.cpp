@@ -5,6 +5,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <filesystem>
@@ -336,6 +337,34 @@ TEST(CaseFile, RelativeMeshFileIsReadFromTheCaseFolder) {
   const Case c = read_case((folder / "river.yaml").string());
   EXPECT_EQ(c.mesh.kind, MeshSource::Kind::file);
   EXPECT_EQ(c.mesh.file, (folder / "meshes" / "river.msh").string());
+  std::filesystem::remove_all(folder);
+}
+
+// Named pipes read as files would block the run until something writes to them: a case file, a
+// mesh file and a raster that are named pipes are refused, naming the file and the key.
+TEST(CaseFileError, NamedPipesAreRefusedAsInputs) {
+  const auto folder = test::fresh_test_folder("flotsam_case_fifo_test");
+  const std::string pipe = (folder / "pipe").string();
+  const auto refusal = [](const std::string& path) {
+    try {
+      read_case(path);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+  EXPECT_EQ(refusal(pipe),
+            "the case file '" + pipe + "' is a named pipe, not a file: flotsam reads it whole");
+  std::ofstream(folder / "mesh.yaml")
+      << edited("  channel: {length: 100, width: 20}", "  file: pipe");
+  EXPECT_EQ(refusal((folder / "mesh.yaml").string()),
+            (folder / "mesh.yaml").string() + ":2: mesh.file: '" + pipe +
+                "' is a named pipe, not a file: flotsam reads its inputs whole from files");
+  std::ofstream(folder / "bed.yaml") << appended("bed: {raster: pipe}\n");
+  EXPECT_EQ(refusal((folder / "bed.yaml").string()),
+            (folder / "bed.yaml").string() + ":12: bed.raster: '" + pipe +
+                "' is a named pipe, not a file: flotsam reads its inputs whole from files");
   std::filesystem::remove_all(folder);
 }
 

@@ -6,6 +6,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -77,6 +78,21 @@ std::string check_error(const std::string& path) {
     return e.what();
   }
   return "no error";
+}
+
+// A mesh file that is a named pipe (`flotsam info pipe.msh`) is refused, not waited on.
+TEST(MshCheck, ANamedPipeIsRefused) {
+  const auto folder = test::fresh_test_folder("flotsam_msh_fifo_test");
+  const std::string pipe = (folder / "river.msh").string();
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+  try {
+    check_msh(pipe);
+    FAIL() << "a named pipe was read as a mesh";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              pipe + ": the mesh file is a named pipe, not a file: flotsam reads it whole");
+  }
+  std::filesystem::remove_all(folder);
 }
 
 TEST(MshCheck, HandWrittenMsh41PassesWithItsCountsAndReads) {
