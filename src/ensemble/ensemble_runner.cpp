@@ -25,6 +25,7 @@
 #include "ensemble/ensemble_statistics.hpp"
 #include "ensemble/member_case.hpp"
 #include "ensemble/member_runner.hpp"
+#include "io/case_digest.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 
@@ -41,6 +42,20 @@ std::uint64_t fingerprint(const std::string& text) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ULL;
   return h;
+}
+
+// What differs between the manifest held and the new one, for the message: " (changed: case,
+// input bed.raster)", the first word or two of each line of `now` that `held` lacks.
+std::string changed_lines(const std::string& held, const std::string& now) {
+  std::vector<std::string> changed;
+  std::istringstream lines(now);
+  for (std::string line; std::getline(lines, line);) {
+    if (held.find(line + "\n") != std::string::npos) continue;
+    const std::size_t first = line.find(' ');
+    const std::size_t second = line.starts_with("input ") ? line.find(' ', first + 1) : first;
+    changed.push_back(line.substr(0, second));
+  }
+  return changed.empty() ? "" : fmt::format(" (changed: {})", fmt::join(changed, ", "));
 }
 
 bool ours(const fs::path& entry) {
@@ -72,9 +87,9 @@ std::string prepare_ensemble_directory(const fs::path& directory, const std::str
     if (held.str() == manifest && !overwrite) return "resumed";
     if (!overwrite)
       throw_input_error(
-          "output folder '{}' holds an ensemble of another case or member count; add --overwrite "
-          "to replace it, or choose another folder",
-          directory.string());
+          "output folder '{}' holds an ensemble of another case, member count or input files{}; "
+          "add --overwrite to replace it, or choose another folder",
+          directory.string(), changed_lines(held.str(), manifest));
     for (const fs::directory_entry& entry : fs::directory_iterator(directory))
       if (ours(entry.path())) fs::remove_all(entry.path());
   }
@@ -175,6 +190,12 @@ Plan make_plan(const EnsembleOptions& options) {
   plan.manifest = fmt::format("flotsam ensemble 1\ncase {}\nfingerprint {:016x}\nmembers {}\n",
                               fs::absolute(options.case_file).lexically_normal().string(),
                               fingerprint(text), plan.config.total_members());
+  // The files the case reads, by the checksums of their contents its settings hold: a member
+  // run after one changed would belong to another study.
+  for (const CaseSetting& s : plan.base.settings)
+    if (s.key.ends_with(file_contents_suffix))
+      plan.manifest += fmt::format(
+          "input {} {}\n", s.key.substr(0, s.key.size() - file_contents_suffix.size()), s.value);
   return plan;
 }
 

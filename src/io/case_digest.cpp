@@ -94,7 +94,8 @@ std::vector<CaseSetting> case_settings(const YAML::Node& root,
   std::vector<CaseSetting> all, kept;
   collect(root, "", all);
   for (const InputFile& file : input_files)
-    all.push_back({file.key + " (file contents)", file_checksum(file.path, file.key)});
+    all.push_back(
+        {file.key + std::string(file_contents_suffix), file_checksum(file.path, file.key)});
   for (CaseSetting& setting : all)
     if (setting_kind(setting.key) != SettingKind::free) kept.push_back(std::move(setting));
   return kept;

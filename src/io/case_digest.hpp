@@ -28,6 +28,9 @@ namespace flotsam {
 enum class SettingKind { free, output, run };
 SettingKind setting_kind(std::string_view key);
 
+/// The suffix of the setting that holds an input file's checksum: "bed.raster (file contents)".
+inline constexpr std::string_view file_contents_suffix = " (file contents)";
+
 /// Every value under `root`, in document order (numbers in their shortest exact form), then for
 /// each of `input_files` its checksum; free keys are left out.
 std::vector<CaseSetting> case_settings(const YAML::Node& root,

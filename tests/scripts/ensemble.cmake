@@ -1,9 +1,9 @@
 # `flotsam ensemble` (label cli): determinism over --jobs and MPI ranks, resume, a failing member,
-# the shared flow
+# the shared flow, a changed input file
 # (tests/scripts/ensemble_check.sh says what each checks).
 set(ensemble_work ${CMAKE_CURRENT_BINARY_DIR}/ensemble_work)
 set(ensemble_modes reference jobs2 resume failing_member shared_flow discharge_varies member_restart
-                   killed)
+                   killed input_changed)
 find_program(FLOTSAM_MPIRUN mpirun)
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
   list(APPEND ensemble_modes mpirun2)

@@ -22,6 +22,9 @@
 #                    complete members kept, the others (one half-written) run again, each
 #                    member's .pvd index listing the fields it wrote (skipped, code 77, when the
 #                    kill came after the last member)
+#   input_changed    an ensemble whose mesh file (an input the case reads) changed is not
+#                    resumed: the run is refused, naming the changed input, and nothing in the
+#                    folder changes
 set -euo pipefail
 mode=$1 flotsam=$2 case=$3 work=$4
 mkdir -p "$work" && cd "$work"
@@ -136,6 +139,24 @@ case $mode in
           || { echo "FAIL: $m's index ends before 12 s"; exit 1; }
     done
     echo "killed with $complete of 20 members complete; resumed to the same summary" ;;
+  input_changed)
+    rm -rf inputs && mkdir inputs
+    "$flotsam" mesh "$case" -o inputs/river.msh >/dev/null
+    awk '/^mesh:/ {print "mesh:\n  file: river.msh"; skip = 1; next}
+         /^[a-z]/ {skip = 0} !skip' "$case" > inputs/case.yaml
+    grep -q "file: river.msh" inputs/case.yaml
+    "$flotsam" ensemble inputs/case.yaml -o inputs/out --overwrite -q --no-pictures >/dev/null
+    before=$(cd inputs/out && find . -type f -printf '%p %s %T@\n' | sort | md5sum)
+    sed 's/mesh_size: 12/mesh_size: 11/' "$case" > inputs/finer.yaml
+    "$flotsam" mesh inputs/finer.yaml -o inputs/river.msh --overwrite >/dev/null
+    if out=$("$flotsam" ensemble inputs/case.yaml -o inputs/out -q --no-pictures 2>&1); then
+      echo "FAIL: resumed after its mesh file changed: $out"; exit 1
+    fi
+    grep -q "holds an ensemble of another case, member count or input files (changed: input mesh.file)" <<<"$out" \
+        || { echo "FAIL: $out"; exit 1; }
+    after=$(cd inputs/out && find . -type f -printf '%p %s %T@\n' | sort | md5sum)
+    [ "$before" = "$after" ] || { echo "FAIL: the folder changed"; exit 1; }
+    echo "refused: $out" ;;
   discharge_varies)
     sed -e 's/mode: two-way/mode: one-way/' \
         -e 's/inflow: {type: elevation, value: 4.0}/inflow: {type: discharge, value: 240}/' \
