@@ -3,6 +3,7 @@
 // closed by RAII, a coordinate system as WKT text.
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
+#include <spdlog/spdlog.h>
 
 #include <filesystem>
 #include <memory>
@@ -12,9 +13,17 @@
 
 namespace flotsam::gdal {
 
+/// GDAL's own messages go to the log at debug level, not to stderr: flotsam's errors name the
+/// file and the key and quote GDAL's reason (CPLGetLastErrorMsg, which the handler leaves set),
+/// so that a bare "ERROR 1: ..." naming no file never comes before them.
+inline void log_gdal_message(CPLErr level, CPLErrorNum number, const char* message) {
+  spdlog::debug("GDAL {} {}: {}", level >= CE_Failure ? "error" : "warning", number, message);
+}
+
 inline void register_drivers() {
   static const bool registered = [] {
     GDALAllRegister();
+    CPLSetErrorHandler(log_gdal_message);
     return true;
   }();
   (void)registered;

@@ -104,6 +104,30 @@ TEST(Raster, GeoTiffIsReplacedWholeOrNotAtAll) {
   fs::remove_all(dir);
 }
 
+// A truncated GeoTIFF is refused by flotsam's message, naming the key and the file; GDAL's own
+// lines ("ERROR 1: ... scanline ...", naming no file) do not reach stderr.
+TEST(Raster, TruncatedGeoTiffIsNamedAndGdalStaysQuiet) {
+  const fs::path dir = test::fresh_test_folder("flotsam_raster_truncated_test");
+  const std::string path = (dir / "dem.tif").string();
+  RasterGrid g = RasterGrid::covering({0.0, 0.0}, {640.0, 640.0}, 2.0, "");
+  std::vector<double> v(static_cast<std::size_t>(g.columns) * g.rows);
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::sin(0.37 * k) * 100.0;  // incompressible
+  write_geotiff(path, g, v);
+  fs::resize_file(path, fs::file_size(path) / 2);
+  testing::internal::CaptureStderr();
+  std::string message = "no error";
+  try {
+    Raster::read(path, "case.yaml:7: bed.raster");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  const std::string printed = testing::internal::GetCapturedStderr();
+  EXPECT_THAT(message, ::testing::StartsWith("case.yaml:7: bed.raster: "));
+  EXPECT_THAT(message, ::testing::HasSubstr(path));
+  EXPECT_EQ(printed, "");
+  fs::remove_all(dir);
+}
+
 TEST(Raster, GeoTiffRoundTripKeepsValuesGeoreferencingAndCoordinateSystem) {
   const fs::path dir = fs::temp_directory_path() / "flotsam_raster_test";
   fs::create_directories(dir);
