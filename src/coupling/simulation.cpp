@@ -9,6 +9,7 @@
 #include "bodies/outflow.hpp"
 #include "bridges/deck_contact.hpp"
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "coupling/flow_engines.hpp"
 #include "coupling/jam_extent.hpp"
 #include "coupling/placement_overlap.hpp"
@@ -84,6 +85,7 @@ void Simulation::initialize() {
   }
   check_decks_stand_above_the_bed();
   check_probes_inside(case_.output.probes, flow_->field(), case_.file);  // before any output
+  if (case_.output.raster_resolution > 0.0) (void)envelope_grid();
   next_output_ = time_;
   if (options_.restart) {
     read_checkpoint(checkpoint.string());
@@ -293,10 +295,27 @@ void Simulation::open_output(const std::vector<double>* output_times) {
                                      : PvdWriter::Start::at_first_add);
   const std::string& crs = case_.crs_wkt;
   if (!crs.empty()) output_->write_coordinate_system(crs);
-  if (case_.output.raster_resolution <= 0.0) return;
-  Vec2 lo = mesh_.nodes.front(), hi = lo;  // the envelopes' rasters cover the mesh
+  if (case_.output.raster_resolution > 0.0) output_->write_rasters_on(envelope_grid());
+}
+
+// About 24 bytes a pixel: the cell under each pixel, one envelope's values and GDAL's copy of
+// them while it writes. Checked before anything is written: a resolution of 1e-4 m stopped the
+// run with std::bad_alloc after its first outputs.
+RasterGrid Simulation::envelope_grid() const {
+  const double r = case_.output.raster_resolution;  // [m]
+  Vec2 lo = mesh_.nodes.front(), hi = lo;           // the envelopes' rasters cover the mesh
   for (const Vec2& p : mesh_.nodes) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  output_->write_rasters_on(RasterGrid::covering(lo, hi, case_.output.raster_resolution, crs));
+  const double pixels =
+      (std::ceil((hi.x() - lo.x()) / r) + 1.0) * (std::ceil((hi.y() - lo.y()) / r) + 1.0);
+  const double bytes = 24.0 * pixels;
+  if (bytes > 0.5 * usable_memory())
+    throw_input_error(
+        "{}: output.rasters.resolution: {} m over the mesh ({:.0f} m x {:.0f} m) gives {:.3g} "
+        "pixels, {} to write the envelopes: more than half the memory this process may use "
+        "({}); choose a coarser resolution",
+        case_.file, r, hi.x() - lo.x(), hi.y() - lo.y(), pixels, format_bytes(bytes),
+        format_bytes(usable_memory()));
+  return RasterGrid::covering(lo, hi, r, case_.crs_wkt);
 }
 
 void Simulation::run() {

@@ -94,6 +94,9 @@ class Simulation {
   void advance_bodies(double t0, double t1);
   void apply_reaction();
   void check_decks_stand_above_the_bed() const;  // InputError for a deck under the ground
+  // The grid of the envelopes' rasters over the mesh (output.rasters); an InputError when its
+  // pixels would not fit in memory.
+  RasterGrid envelope_grid() const;
   void check_diagnostics();
   void write_output_if_due(bool force);
   void open_probes(std::optional<CsvResume> resume);

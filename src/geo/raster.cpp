@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 #include "geo/gdal_support.hpp"
 
 namespace flotsam {
@@ -87,6 +88,12 @@ Raster Raster::read(const std::string& path, const std::string& origin) {
   GDALRasterBand* band = d->GetRasterBand(1);
   int has_nodata = 0;
   const double nodata_value = band->GetNoDataValue(&has_nodata);
+  const double bytes = 8.0 * grid.columns * grid.rows;  // the values as doubles
+  if (bytes > 0.5 * usable_memory())
+    throw_input_error(
+        "{}: '{}' has {} x {} pixels, {} as 8-byte values: more than half the memory this "
+        "process may use ({}); crop it to the domain or coarsen it (gdal_translate -projwin, -tr)",
+        origin, path, grid.columns, grid.rows, format_bytes(bytes), format_bytes(usable_memory()));
   std::vector<double> values(static_cast<std::size_t>(grid.columns) * grid.rows);
   if (band->RasterIO(GF_Read, 0, 0, grid.columns, grid.rows, values.data(), grid.columns, grid.rows,
                      GDT_Float64, 0, 0) != CE_None)

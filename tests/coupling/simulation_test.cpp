@@ -365,5 +365,29 @@ TEST(Simulation, AGaugeOutsideTheDomainIsRefusedBeforeAnyOutput) {
   std::filesystem::remove_all(dir);
 }
 
+// Envelope rasters too fine to fit in memory (1e-5 m pixels over the 200 m x 20 m channel: 4e13
+// pixels) are refused before the run writes anything, naming the key and the size, instead of
+// stopping with std::bad_alloc after the first outputs.
+TEST(Simulation, EnvelopeRastersLargerThanMemoryAreRefusedBeforeAnyOutput) {
+  const auto dir = test::fresh_test_folder("flotsam_simulation_test");
+  Case c = channel_case(CouplingMode::one_way);
+  c.bodies.bodies.clear();
+  c.flow.engine = FlowEngineKind::fv;
+  c.file = "river.yaml";
+  c.output.raster_resolution = 1e-5;  // [m]
+  Simulation s(
+      c, channel_mesh(),
+      {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+  try {
+    s.initialize();
+    FAIL() << "rasters of 4e13 pixels were accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::StartsWith("river.yaml: output.rasters.resolution: 1e-05 m "
+                                                "over the mesh (200 m x 20 m) gives 4e+13 pixels"));
+  }
+  EXPECT_TRUE(!std::filesystem::exists(dir) || std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace flotsam

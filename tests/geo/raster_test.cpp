@@ -3,6 +3,7 @@
 // and a GeoTIFF replaced whole or not at all.
 #include "geo/raster.hpp"
 
+#include <gdal_priv.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
@@ -125,6 +126,34 @@ TEST(Raster, TruncatedGeoTiffIsNamedAndGdalStaysQuiet) {
   EXPECT_THAT(message, ::testing::StartsWith("case.yaml:7: bed.raster: "));
   EXPECT_THAT(message, ::testing::HasSubstr(path));
   EXPECT_EQ(printed, "");
+  fs::remove_all(dir);
+}
+
+// A raster that declares more pixels than memory holds (150,000 x 150,000: 180 GB as doubles;
+// the file itself under 2 MB, its blocks sparse) is refused before anything is
+// allocated, naming the key, the file and its size, instead of stopping with std::bad_alloc.
+TEST(Raster, RasterLargerThanMemoryIsRefused) {
+  const fs::path dir = test::fresh_test_folder("flotsam_raster_huge_test");
+  const std::string path = (dir / "huge.tif").string();
+  GDALAllRegister();
+  char** options = CSLSetNameValue(nullptr, "SPARSE_OK", "TRUE");
+  GDALDataset* d = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      path.c_str(), 150000, 150000, 1, GDT_Float64, options);
+  CSLDestroy(options);
+  ASSERT_NE(d, nullptr);
+  double transform[6] = {500000.0, 1.0, 0.0, 5200000.0, 0.0, -1.0};  // 1 m pixels
+  d->SetGeoTransform(transform);
+  GDALClose(d);
+  ASSERT_LT(fs::file_size(path), 4000000u);  // its strip table only
+  try {
+    Raster::read(path, "case.yaml:7: bed.raster");
+    FAIL() << "a raster of 180 GB was read";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()),
+                ::testing::StartsWith("case.yaml:7: bed.raster: '" + path +
+                                      "' has 150000 x 150000 pixels, 180 GB as 8-byte values: "
+                                      "more than half the memory this process may use"));
+  }
   fs::remove_all(dir);
 }
 
