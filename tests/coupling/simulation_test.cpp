@@ -181,6 +181,44 @@ TEST(Simulation, WritesOneSnapshotPerIntervalAndRefusesToOverwrite) {
   std::filesystem::remove_all(dir);
 }
 
+// Runs `c` on the channel mesh for its whole time, writing into `dir`; returns the summary.
+std::string run_writing(const Case& c, const std::filesystem::path& dir) {
+  Simulation s(
+      c, channel_mesh(),
+      {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
+  s.run();
+  return s.summary();
+}
+
+// The balance table a run wrote in `dir`: its header and its last row.
+struct BalanceTable {
+  std::string header;
+  std::vector<double> last;
+};
+BalanceTable balance_table(const std::filesystem::path& dir) {
+  std::ifstream csv(dir / "channel_balance.csv");
+  BalanceTable table;
+  std::string line, last;
+  std::getline(csv, table.header);
+  while (std::getline(csv, line)) last = line;
+  std::stringstream fields(last);
+  for (std::string field; std::getline(fields, field, ',');) table.last.push_back(std::stod(field));
+  return table;
+}
+
+// The channel closed by walls all round, without bodies, on the finite-volume engine, 10 s with
+// an output every 5 s.
+Case closed_fv_channel() {
+  Case c = channel_case(CouplingMode::one_way);
+  c.bodies.bodies.clear();
+  c.flow.engine = FlowEngineKind::fv;
+  for (BoundaryCondition& b : c.flow.boundaries)
+    b = {BoundaryCondition::Kind::wall, b.group, {}, {}};
+  c.time.end = 10.0;
+  c.output.interval = 5.0;
+  return c;
+}
+
 // The balance table carries the volume out through each open group: in the unsteady channel
 // (discharge Q in at the left, elevation held at the right) the left's column is -Q t exactly
 // (the discharge is imposed), and the groups' columns add up to the total outflow.
@@ -190,22 +228,12 @@ TEST(Simulation, BalanceTableHasTheOutflowOfEachOpenGroup) {
   c.bodies.bodies.clear();
   c.time.end = 10.0;
   c.output.interval = 5.0;
-  {
-    Simulation s(
-        c, channel_mesh(),
-        {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
-    s.run();
-  }
-  std::ifstream csv(dir / "channel_balance.csv");
-  std::string header, line, last;
-  std::getline(csv, header);
-  EXPECT_EQ(header,
+  run_writing(c, dir);
+  const BalanceTable table = balance_table(dir);
+  EXPECT_EQ(table.header,
             "t [s],volume [m^3],outflow [m^3],balance error [m^3],relative error [-],"
             "outflow left [m^3],outflow right [m^3]");
-  while (std::getline(csv, line)) last = line;
-  std::vector<double> row;
-  std::stringstream fields(last);
-  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  const std::vector<double>& row = table.last;
   ASSERT_EQ(row.size(), 7u);
   EXPECT_EQ(row[0], 10.0);
   EXPECT_NEAR(row[5], -Q * 10.0, 1e-6 * Q * 10.0);        // CSV precision: 9 digits
@@ -218,34 +246,16 @@ TEST(Simulation, BalanceTableHasTheOutflowOfEachOpenGroup) {
 // volume gained their difference; the summary names both.
 TEST(Simulation, BalanceTableHasTheRainAndTheInfiltration) {
   const auto dir = test::fresh_test_folder("flotsam_simulation_test");
-  Case c = channel_case(CouplingMode::one_way);
-  c.bodies.bodies.clear();
-  c.flow.engine = FlowEngineKind::fv;
-  for (BoundaryCondition& b : c.flow.boundaries)
-    b = {BoundaryCondition::Kind::wall, b.group, {}, {}};
+  Case c = closed_fv_channel();
   c.flow.rain.enabled = true;
   c.flow.rain.intensity = TimeSeries(360.0);  // [mm/h] = 1e-4 m/s
   c.flow.rain.infiltration = 36.0;            // [mm/h] = 1e-5 m/s
-  c.time.end = 10.0;
-  c.output.interval = 5.0;
-  std::string summary;
-  {
-    Simulation s(
-        c, channel_mesh(),
-        {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
-    s.run();
-    summary = s.summary();
-  }
-  std::ifstream csv(dir / "channel_balance.csv");
-  std::string header, line, last;
-  std::getline(csv, header);
-  EXPECT_EQ(header,
+  const std::string summary = run_writing(c, dir);
+  const BalanceTable table = balance_table(dir);
+  EXPECT_EQ(table.header,
             "t [s],volume [m^3],outflow [m^3],rain [m^3],infiltration [m^3],balance error [m^3],"
             "relative error [-]");
-  while (std::getline(csv, line)) last = line;
-  std::vector<double> row;
-  std::stringstream fields(last);
-  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  const std::vector<double>& row = table.last;
   ASSERT_EQ(row.size(), 7u);
   const double area = length * width, rain = 1e-4 * 10.0 * area, lost = 1e-5 * 10.0 * area;
   EXPECT_EQ(row[0], 10.0);
@@ -261,36 +271,18 @@ TEST(Simulation, BalanceTableHasTheRainAndTheInfiltration) {
 // source of 2 m^3/s has let in 20 m^3 after 10 s, all of it in the volume; the summary names it.
 TEST(Simulation, BalanceTableHasTheSources) {
   const auto dir = test::fresh_test_folder("flotsam_simulation_test");
-  Case c = channel_case(CouplingMode::one_way);
-  c.bodies.bodies.clear();
-  c.flow.engine = FlowEngineKind::fv;
-  for (BoundaryCondition& b : c.flow.boundaries)
-    b = {BoundaryCondition::Kind::wall, b.group, {}, {}};
+  Case c = closed_fv_channel();
   FlowSource culvert;
   culvert.point = Vec2(0.3 * length, 0.5 * width);
   culvert.discharge = TimeSeries(2.0);  // [m^3/s]
   culvert.origin = "test: flow.sources[0]";
   c.flow.sources = {culvert};
-  c.time.end = 10.0;
-  c.output.interval = 5.0;
-  std::string summary;
-  {
-    Simulation s(
-        c, channel_mesh(),
-        {.output_directory = dir, .overwrite = true, .write_output = true, .progress = false});
-    s.run();
-    summary = s.summary();
-  }
-  std::ifstream csv(dir / "channel_balance.csv");
-  std::string header, line, last;
-  std::getline(csv, header);
+  const std::string summary = run_writing(c, dir);
+  const BalanceTable table = balance_table(dir);
   EXPECT_EQ(
-      header,
+      table.header,
       "t [s],volume [m^3],outflow [m^3],sources [m^3],balance error [m^3],relative error [-]");
-  while (std::getline(csv, line)) last = line;
-  std::vector<double> row;
-  std::stringstream fields(last);
-  for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+  const std::vector<double>& row = table.last;
   ASSERT_EQ(row.size(), 6u);
   EXPECT_EQ(row[0], 10.0);
   EXPECT_NEAR(row[3], 20.0, 1e-8 * 20.0);
