@@ -2,41 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 #include "core/error.hpp"
+#include "mesh/point_locator.hpp"
 #include "mesh/simple_polygon.hpp"
 
 namespace flotsam {
 
-namespace {
-
-// The cell whose triangle holds p (the first one, on a shared edge), or -1.
-int cell_holding(const Mesh& mesh, const CellMesh& cells, const Vec2& p) {
-  constexpr double tolerance = 1e-12;  // [-] of the cell's doubled area: p on an edge is in
-  for (int i = 0; i < cells.cell_count; ++i) {
-    const Vec2& a = mesh.nodes[cells.corners[i][0]];
-    const Vec2& b = mesh.nodes[cells.corners[i][1]];
-    const Vec2& c = mesh.nodes[cells.corners[i][2]];
-    const double slack = -tolerance * 2.0 * cells.area[i];
-    if (orientation(a, b, p) >= slack && orientation(b, c, p) >= slack &&
-        orientation(c, a, p) >= slack)
-      return i;
-  }
-  return -1;
-}
-
-}  // namespace
-
 FlowSources::FlowSources(const std::vector<FlowSource>& sources, const Mesh& mesh,
                          const CellMesh& cells) {
+  std::optional<PointLocator> locator;  // built once, for point sources only
   for (const FlowSource& s : sources) {
     Placed placed;
     placed.discharge = s.discharge;
     if (s.polygon.empty()) {
-      const int cell = cell_holding(mesh, cells, s.point);
-      if (cell < 0)
+      // The cell holding the point, found as the flow field finds a gauge's (FvFlowField).
+      if (!locator) locator.emplace(mesh);
+      const Location where = locator->locate(s.point);
+      if (!where.inside)
         throw_input_error("{}: the point ({:.3f}, {:.3f}) m lies outside the mesh '{}'", s.origin,
                           s.point.x(), s.point.y(), mesh.source);
-      placed.cells.push_back(cell);
+      placed.cells.push_back(cells.cell_of(where.element, where.r, where.s));
     } else {
       for (int i = 0; i < cells.cell_count; ++i)
         if (polygon_contains(s.polygon, cells.centroid[i])) placed.cells.push_back(i);
