@@ -360,6 +360,30 @@ std::vector<double> Simulation::backwater_rise() const {
   return backwater_probe_->rise(flow_->eta(), reference_flow_->eta());
 }
 
+// What each open boundary let out in the last step [m^3/s] (negative: in), and their sum: with
+// steady boundaries a settled flow lets out what comes in (docs/model.md "Reading the summary").
+std::string Simulation::discharge_summary() const {
+  const std::vector<double>& rate = flow_->water_balance().group_rate;
+  const Mesh& mesh = flow_->mesh();
+  std::vector<int> groups;  // open boundaries' groups, in the case's order, each once
+  for (const BoundaryCondition& c : case_.flow.boundaries) {
+    const int g = mesh.find_group(c.group);
+    const bool open =
+        c.kind != BoundaryCondition::Kind::wall && c.kind != BoundaryCondition::Kind::noslip;
+    if (open && g >= 0 && g < static_cast<int>(rate.size()) &&
+        std::find(groups.begin(), groups.end(), g) == groups.end())
+      groups.push_back(g);
+  }
+  if (groups.empty() || step_count_ == 0 || case_.time.mode == CouplingMode::frozen) return "";
+  std::string s = "discharges out   in the last step:";
+  double net = 0.0;  // [m^3/s]
+  for (int g : groups) {
+    s += fmt::format(" {} {:.4g},", mesh.group_names[g], rate[g]);
+    net += rate[g];
+  }
+  return s + fmt::format(" in all {:.4g} m^3/s\n", net);
+}
+
 std::string Simulation::summary() const {
   std::string s;
   const WaterBalance& b = flow_->water_balance();
@@ -377,6 +401,7 @@ std::string Simulation::summary() const {
       case_.flow.sources.empty() ? "" : fmt::format(", sources {:.6g} m^3", b.sources),
       b.lag != 0.0 ? fmt::format(", in BDF2's time lag {:.6g} m^3", b.lag) : "");
   s += fmt::format("water balance    {:.3g} m^3, relative {:.3g}\n", b.error(), b.relative_error());
+  s += discharge_summary();
   if (has_bodies_) {
     int floating = 0, grounded = 0;
     for (auto st : bodies_.state) {

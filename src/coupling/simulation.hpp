@@ -90,6 +90,7 @@ class Simulation {
   const ContactWorld& contacts() const { return *contacts_; }
 
  private:
+  std::string discharge_summary() const;
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void apply_reaction();

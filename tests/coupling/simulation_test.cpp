@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -228,11 +229,29 @@ TEST(Simulation, BalanceTableHasTheOutflowOfEachOpenGroup) {
   c.bodies.bodies.clear();
   c.time.end = 10.0;
   c.output.interval = 5.0;
-  run_writing(c, dir);
+  const std::string summary = run_writing(c, dir);
   const BalanceTable table = balance_table(dir);
   EXPECT_EQ(table.header,
             "t [s],volume [m^3],outflow [m^3],balance error [m^3],relative error [-],"
             "outflow left [m^3],outflow right [m^3]");
+  // The summary's self-check: each open group's discharge in the last step (the left's is -Q,
+  // imposed) and their sum; the FEM's relative change of u in the last step, in (0, 1) while
+  // the channel still fills.
+  double left = 0.0, right = 0.0, sum = 0.0, change = -1.0;
+  const auto line = summary.find("discharges out   in the last step:");
+  ASSERT_NE(line, std::string::npos) << summary;
+  ASSERT_EQ(std::sscanf(summary.c_str() + line,
+                        "discharges out   in the last step: left %lf, right %lf, in all %lf", &left,
+                        &right, &sum),
+            3)
+      << summary;
+  EXPECT_NEAR(left, -Q, 1e-4 * Q);  // printed to 4 digits
+  EXPECT_NEAR(sum, left + right, 2e-4 * Q);
+  const auto fem = summary.find("the last step changed u by ");
+  ASSERT_NE(fem, std::string::npos) << summary;
+  ASSERT_EQ(std::sscanf(summary.c_str() + fem, "the last step changed u by %lf", &change), 1);
+  EXPECT_GT(change, 0.0);
+  EXPECT_LT(change, 1.0);
   const std::vector<double>& row = table.last;
   ASSERT_EQ(row.size(), 7u);
   EXPECT_EQ(row[0], 10.0);

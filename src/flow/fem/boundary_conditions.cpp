@@ -136,7 +136,8 @@ BoundaryConditions resolve_boundary_conditions(const Mesh& mesh, const FlowConfi
     }
   }
   for (int v = 0; v < mesh.vertex_count; ++v)
-    if (elevation_condition[v] >= 0) bc.elevation_nodes.push_back({v, elevation_condition[v]});
+    if (elevation_condition[v] >= 0)
+      bc.elevation_nodes.push_back({v, elevation_condition[v], elevation_normal[v].normalized()});
 
   const double corner_cos = std::cos(corner_angle_deg * pi / 180.0);
   for (int node = 0; node < n_nodes; ++node) {

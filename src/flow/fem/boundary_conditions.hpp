@@ -31,6 +31,7 @@ constexpr double corner_angle_deg = 30.0;  // [deg] wall normals further apart m
 struct ElevationNode {
   int vertex;     // P1 node
   int condition;  // index into FlowConfig::boundaries
+  Vec2 outward;   // unit outward normal of the elevation boundary at the vertex
 };
 
 struct VelocityNode {

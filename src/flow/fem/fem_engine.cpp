@@ -1,5 +1,6 @@
 #include "flow/fem/fem_engine.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "core/error.hpp"
@@ -120,6 +121,19 @@ void FemEngine::restore(ArchiveReader& r, const std::string& prefix) {
   solver_.set_state(s, &previous);
   solver_.restore_water_balance(read_water_balance(r, prefix));
   field_.pack_states();
+}
+
+// The FEM's self-check: how much the last step changed the flow. With steady boundaries a flow
+// that settles shows 1e-6 or less; one that does not (a drifting or chaotic state, or real
+// unsteadiness such as eddies shed by a pier) shows it here (docs/model.md "Reading the summary").
+std::string FemEngine::summary() const {
+  const Case& c = solver_.flow_case();
+  const std::string change = c.time.mode == CouplingMode::frozen
+                                 ? std::string("the flow is frozen at its steady state")
+                                 : fmt::format("the last step changed u by {:.2g} of its largest",
+                                               solver_.last_step_change());
+  return fmt::format("finite elements  {} elements, {} nodes; {}\n", mesh().element_count(),
+                     mesh().node_count(), change);
 }
 
 }  // namespace flotsam

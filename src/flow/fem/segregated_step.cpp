@@ -719,9 +719,10 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
     w.dirichlet.assign(N1, 0);
     Vector& d_eta = w.d_eta;
     d_eta.setZero(N1);
-    for (const auto& node : s.bc_.elevation_nodes) {
-      w.dirichlet[node.vertex] = 1;
-      d_eta[node.vertex] = flow.boundaries[node.condition].value(it.t_new) - n.eta[node.vertex];
+    for (int k = 0; k < static_cast<int>(s.bc_.elevation_nodes.size()); ++k) {
+      const int i = s.bc_.elevation_nodes[k].vertex;
+      w.dirichlet[i] = 1;
+      d_eta[i] = s.elevation_boundary_level(k, it) - n.eta[i];
     }
     eliminate_elevation_boundaries(w);
     const Eigen::Map<const SparseMatrix> system(N1, N1, S_.nonZeros(), S_.outerIndexPtr(),

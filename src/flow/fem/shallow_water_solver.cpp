@@ -378,12 +378,29 @@ void ShallowWaterSolver::assemble_inflow_stabilisation() {
   }
 }
 
+// The level held at elevation vertex k at time t [m]: the boundary's eta, except where water
+// flows back in through a boundary that lets water out (its outflow in the last step was
+// positive): that water comes from the still water beyond at the given level, so the level
+// held is its total head less the kinetic head of the inflow, eta_b - (u^n . n)^2 / (2 g)
+// (spec 1.4). Otherwise the boundary would hand the re-entering water its speed for free, and
+// a recirculation at an outlet's corner feeds itself (docs/model.md "Backflow at an outlet").
+// With characteristics only: the Eulerian form's counterpart is term (12).
+double ShallowWaterSolver::elevation_boundary_level(int k, const Iteration& it) const {
+  const ElevationNode& n = bc_.elevation_nodes[k];
+  const double level = case_.flow.boundaries[n.condition].value(it.t_new);  // [m]
+  if (!it.characteristics) return level;
+  const auto& rate = balance_.group_rate;
+  const int g = elevation_group_[k];
+  if (g >= static_cast<int>(rate.size()) || rate[g] <= 0.0) return level;
+  const double u_n = Vec2(previous_.u[n.vertex], previous_.v[n.vertex]).dot(n.outward);  // [m/s]
+  return u_n < 0.0 ? level - u_n * u_n / (2.0 * case_.flow.gravity) : level;
+}
+
 void ShallowWaterSolver::apply_boundary_conditions(const Iteration& it) {
   system_.save_dirichlet_rows();
-  const auto& conditions = case_.flow.boundaries;
   int slot = 0;
-  for (const auto& n : bc_.elevation_nodes)
-    system_.set_dirichlet(slot++, conditions[n.condition].value(it.t_new));
+  for (int k = 0; k < static_cast<int>(bc_.elevation_nodes.size()); ++k)
+    system_.set_dirichlet(slot++, elevation_boundary_level(k, it));
   for (const auto& n : bc_.velocity_nodes) {
     const Vec2 u_b(state_.u[n.node], state_.v[n.node]);  // set by set_boundary_velocities
     system_.set_dirichlet(slot++, u_b.x());

@@ -110,6 +110,9 @@ class ShallowWaterSolver {
   /// velocity in one step is at most `settled` times the largest velocity, or until time
   /// t_max [s]. Returns that relative change of the last step [-].
   double march_to_steady(double dt, double settled, double t_max);
+  /// How much the last step changed the flow: max |u^{n+1} - u^n| / max |u^{n+1}| [-] (0 for
+  /// water at rest). A flow with steady boundaries that has settled shows 1e-8 or less.
+  double last_step_change() const;
 
   /// Body forces per unit mass [m s^-2] applied from the next step on (two-way coupling):
   /// per element (constant on it) and per P2 node (interpolated). Empty: none.
@@ -167,6 +170,7 @@ class ShallowWaterSolver {
   void assemble_system(const Iteration& it);
   void assemble_inflow_stabilisation();
   void apply_boundary_conditions(const Iteration& it);
+  double elevation_boundary_level(int k, const Iteration& it) const;
   void set_boundary_velocities(const Iteration& it);
   Eigen::VectorXd solve();
   void unpack(const Eigen::VectorXd& x);

@@ -181,17 +181,21 @@ SteadyReport ShallowWaterSolver::solve_steady() {
 }
 
 double ShallowWaterSolver::march_to_steady(double dt, double settled, double t_max) {
-  double change = 1.0;  // [-] max |u^{n+1} - u^n| / max |u^{n+1}|
+  double change = 1.0;  // [-]
   while (change > settled && state_.time < t_max) {
     step(dt);  // keeps the state before it in previous_
-    double du = 0.0, u_max = 0.0;
-    for (std::size_t n = 0; n < state_.u.size(); ++n) {
-      du = std::max(du, std::hypot(state_.u[n] - previous_.u[n], state_.v[n] - previous_.v[n]));
-      u_max = std::max(u_max, std::hypot(state_.u[n], state_.v[n]));
-    }
-    change = u_max > 0.0 ? du / u_max : 0.0;
+    change = last_step_change();
   }
   return change;
+}
+
+double ShallowWaterSolver::last_step_change() const {
+  double du = 0.0, u_max = 0.0;  // [m/s]
+  for (std::size_t n = 0; n < state_.u.size(); ++n) {
+    du = std::max(du, std::hypot(state_.u[n] - previous_.u[n], state_.v[n] - previous_.v[n]));
+    u_max = std::max(u_max, std::hypot(state_.u[n], state_.v[n]));
+  }
+  return u_max > 0.0 ? du / u_max : 0.0;
 }
 
 }  // namespace flotsam
