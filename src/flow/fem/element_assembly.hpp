@@ -104,7 +104,8 @@ void assemble_explicit_momentum(const AssemblyParameters& p, const ElementValues
                                 const ElementState& s, std::array<Vec2, 6>& F);
 
 /// Term (10) on one open boundary edge, as the outflow H u . n it carries:
-/// flux[i] = <q_i, theta H^k u_b . n + (1-theta) H^n u^n . n> for its two vertices [m^3/s].
+/// flux[i] = <q_i, theta H^k u_b . n + (1-theta) H^n u^n . n> for its two vertices [m^3/s]
+/// (theta = 1 on discharge boundaries: ShallowWaterSolver::boundary_flux_weight).
 /// u_b is the boundary velocity at t^{n+1} (all three edge nodes are Dirichlet there).
 struct EdgeState {
   std::array<double, 2> eta_k, eta_n;  // at vertices a, b [m]

@@ -708,7 +708,7 @@ StepReport SegregatedStep::step(ShallowWaterSolver& s, double dt) {
         es.u_n[m] = Vec2(n.u[node], n.v[node]);
         if (m < 2) es.eta_k[m] = es.eta_n[m] = n.eta[node];
       }
-      const auto outflow = open_boundary_flux(th, ev, es);
+      const auto outflow = open_boundary_flux(s.boundary_flux_weight(open.condition, it), ev, es);
       for (int m = 0; m < 2; ++m) {
         open_flux[edge.group] += outflow[m];
         b[ev.nodes[m]] -= outflow[m];  // (10)

@@ -331,7 +331,7 @@ void ShallowWaterSolver::assemble_system(const Iteration& it) {
         s.eta_n[m] = n.eta[node];
       }
     }
-    const auto flux = open_boundary_flux(it.theta, ev, s);
+    const auto flux = open_boundary_flux(boundary_flux_weight(open.condition, it), ev, s);
     for (int m = 0; m < 2; ++m) {
       open_flux_[edge.group] += flux[m];
       system_.b[system_.eta_row(ev.nodes[m])] -= flux[m];  // (10)

@@ -172,6 +172,7 @@ class ShallowWaterSolver {
   void apply_boundary_conditions(const Iteration& it);
   double elevation_boundary_level(int k, const Iteration& it) const;
   void set_boundary_velocities(const Iteration& it);
+  double boundary_flux_weight(int c, const Iteration& it) const;
   Eigen::VectorXd solve();
   void unpack(const Eigen::VectorXd& x);
   Eigen::VectorXd pack(const FlowState& s) const;
