@@ -191,8 +191,8 @@ void ShallowWaterSolver::set_boundary_velocities(const Iteration& it) {
 // boundaries, theta (the scheme's) on velocity boundaries. A discharge imposed theta-weighted,
 // theta Q(t^{n+1}) + (1 - theta) Q(t^n) with the boundary's own outflow of t^n in the second
 // part, feeds each step's flux error back with the factor -(1 - theta) / theta; at dt = 5 s on
-// MacDonald's channel (Courant 5, theta = 0.6) the inflow then oscillated and never settled
-// (29 % off near it; docs/model.md "Discharge boundaries").
+// MacDonald's channel (gravity-wave Courant number 1.4, theta = 0.6) the inflow then oscillated and
+// never settled (29 % off near it; docs/model.md "Discharge boundaries").
 double ShallowWaterSolver::boundary_flux_weight(int c, const Iteration& it) const {
   return case_.flow.boundaries[c].kind == BoundaryCondition::Kind::discharge ? 1.0 : it.theta;
 }

@@ -378,7 +378,7 @@ void ShallowWaterSolver::assemble_inflow_stabilisation() {
   }
 }
 
-// The level held at elevation vertex k at time t [m]: the boundary's eta, except where water
+// The level held at elevation vertex k at t^{n+1} [m]: the boundary's eta, except where water
 // flows back in through a boundary that lets water out (its outflow in the last step was
 // positive): that water comes from the still water beyond at the given level, so the level
 // held is its total head less the kinetic head of the inflow, eta_b - (u^n . n)^2 / (2 g)

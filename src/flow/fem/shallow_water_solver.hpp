@@ -111,7 +111,7 @@ class ShallowWaterSolver {
   /// t_max [s]. Returns that relative change of the last step [-].
   double march_to_steady(double dt, double settled, double t_max);
   /// How much the last step changed the flow: max |u^{n+1} - u^n| / max |u^{n+1}| [-] (0 for
-  /// water at rest). A flow with steady boundaries that has settled shows 1e-8 or less.
+  /// water at rest). A flow with steady boundaries that has settled shows 1e-6 or less.
   double last_step_change() const;
 
   /// Body forces per unit mass [m s^-2] applied from the next step on (two-way coupling):
