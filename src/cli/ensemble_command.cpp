@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "cli/commands.hpp"
+#include "cli/logging.hpp"
 #include "ensemble/ensemble_runner.hpp"
 
 namespace flotsam::cli {
@@ -46,21 +47,22 @@ void add_ensemble_command(CLI::App& app) {
     const RankWorld world;
     const EnsembleReport report = run_ensemble(*options, world);
     if (world.rank() != 0) return;
-    fmt::print("{}", report.summary);
-    fmt::print(
+    std::string text = report.summary;
+    text += fmt::format(
         "rank 0           ran {} members, kept {} from an earlier run ({} rank(s) x {} "
         "job(s))\n",
         report.ran, report.kept, world.size(), options->jobs);
     if (report.ran > 0)
-      fmt::print(
+      text += fmt::format(
           "members          {:.3f} s each on rank 0, of which {:.1f} % set-up and output (the "
           "rest in their steps)\n",
           report.member_seconds / report.ran,
           100.0 * (1.0 - report.step_seconds / std::max(report.member_seconds, 1e-300)));
-    fmt::print("flow             {}{}\n", report.flow_sharing,
-               report.flow_shared ? fmt::format(", {:.2f} s", report.flow_seconds) : "");
-    fmt::print("wall time        {:.2f} s\n", report.wall_seconds);
-    fmt::print("results in       {}\n", report.directory.string());
+    text += fmt::format("flow             {}{}\n", report.flow_sharing,
+                        report.flow_shared ? fmt::format(", {:.2f} s", report.flow_seconds) : "");
+    text += fmt::format("wall time        {:.2f} s\n", report.wall_seconds);
+    text += fmt::format("results in       {}\n", report.directory.string());
+    print_result(text);
   });
 }
 

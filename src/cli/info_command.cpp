@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "cli/logging.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_summary.hpp"
@@ -29,7 +30,7 @@ void add_info_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->callback(
-      [path] { fmt::print("{}", format_mesh_summary(summarize_mesh(load_mesh_from(*path)))); });
+      [path] { print_result(format_mesh_summary(summarize_mesh(load_mesh_from(*path)))); });
 }
 
 }  // namespace flotsam::cli

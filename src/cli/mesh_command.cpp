@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
+#include "cli/logging.hpp"
 #include "core/error.hpp"
 #include "io/case_file.hpp"
 #include "io/vtk_writer.hpp"
@@ -43,8 +44,9 @@ void add_mesh_command(CLI::App& app) {
     const Case c = read_case(options->case_file);
     const Mesh mesh = generate_mesh(c.mesh, options->msh);
     if (!options->vtu.empty()) write_vtu(options->vtu, mesh, VtuFields{}, 0.0);
-    fmt::print("{}", format_mesh_summary(summarize_mesh(mesh)));
-    fmt::print("wrote {}{}\n", options->msh, options->vtu.empty() ? "" : " and " + options->vtu);
+    print_result(format_mesh_summary(summarize_mesh(mesh)));
+    print_result(fmt::format("wrote {}{}\n", options->msh,
+                             options->vtu.empty() ? "" : " and " + options->vtu));
   });
 }
 

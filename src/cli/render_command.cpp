@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
+#include "cli/logging.hpp"
 #include "render/frame.hpp"
 #include "render/run_pictures.hpp"
 
@@ -29,10 +30,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--no-frames", options->no_frames, "only the three pictures of the last output");
   cmd->callback([options] {
     PictureOptions picture{options->width, options->height, !options->no_frames, true};
-    const auto files = render_run(options->run_directory, picture,
-                                  [](const std::string& f) { fmt::print("wrote {}\n", f); });
+    const auto files = render_run(options->run_directory, picture, [](const std::string& f) {
+      print_result(fmt::format("wrote {}\n", f));
+    });
     release_font_caches();
-    fmt::print("{} pictures in {}\n", files.size(), options->run_directory);
+    print_result(fmt::format("{} pictures in {}\n", files.size(), options->run_directory));
   });
 }
 

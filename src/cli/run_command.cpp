@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "cli/commands.hpp"
+#include "cli/logging.hpp"
 #include "coupling/simulation.hpp"
 #include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
@@ -55,7 +56,7 @@ void add_run_command(CLI::App& app) {
     const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
     check_estimate(c, estimate);
     if (is_large(estimate))
-      fmt::print(stderr, "flotsam: a large run: {}\n", describe_estimate(estimate));
+      print_error(fmt::format("flotsam: a large run: {}\n", describe_estimate(estimate)));
     Mesh mesh = generate_mesh(c.mesh);
     const RunOptions run{.output_directory = options->output,
                          .overwrite = options->overwrite,
@@ -65,7 +66,7 @@ void add_run_command(CLI::App& app) {
                          .accept_output_changes = options->accept_output_changes};
     Simulation simulation(std::move(c), std::move(mesh), run);
     simulation.run();
-    fmt::print("{}", simulation.summary());
+    print_result(simulation.summary());
   });
 }
 

@@ -24,6 +24,23 @@ flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --o
                  mesh ${examples}/bridge_piers.yaml -o bridge.msh)
 set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)
 
+# Where messages go (issue 40 item 4): the log on standard error, the summary on standard
+# output, and both (debug included) appended to --log's file; exit codes 1 for bad input, CLI11's
+# (105: a missing file) for a command line it refuses.
+file(REMOVE ${cli_work}/overlap.log)
+add_test(NAME cli.run_log_on_stderr_summary_on_stdout
+         COMMAND ${CMAKE_COMMAND}
+                 "-DCOMMAND=$<TARGET_FILE:flotsam>;run;${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_overlapping_logs.yaml;-o;overlap_run;--overwrite;-q;--log;overlap.log"
+                 -DEXPECT_EXIT=0 "-DEXPECT_REGEX=simulated +4.0 s" "-DSTDERR_REGEX=warning.*overlap by"
+                 "-DSTDOUT_EXCLUDES=overlap by|warning" -DFILE=overlap.log
+                 "-DFILE_REGEX=flotsam [0-9.]+ starts.*\\[warning\\] bodies 0 and 1 overlap.*simulated +4.0 s.*results in"
+                 -DWORKDIR=${cli_work} -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
+set_tests_properties(cli.run_log_on_stderr_summary_on_stdout PROPERTIES LABELS "cli"
+                     ENVIRONMENT "${test_environment}")
+flotsam_cli_test(bad_input_exits_1 1 "error: .*tiny_missing_mesh.yaml"
+                 run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_missing_mesh.yaml -o missing_mesh_run)
+flotsam_cli_test(missing_file_exits_105 105 "File does not exist" info no_such.msh)
+
 # A tiny two-way run, then its pictures at a requested size (issue 6: render test).
 flotsam_cli_test(run_tiny_case 0 "bodies: 2 released"
                  run ${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_case.yaml -o tiny_run --overwrite -q)
