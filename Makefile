@@ -3,6 +3,7 @@
 #   make test   build and run the whole test suite (CTest)
 #   make bench  build and run the benchmarks (figures go to docs/performance.md)
 #   make test-fuzz  fuzz the case and mesh readers for FUZZ_SECONDS each (libFuzzer, clang)
+#   make test-qgis  open a run's UGRID and GeoPackage results in QGIS itself (python3-qgis)
 
 BUILD     ?= build
 SAN_BUILD ?= build-sanitize
@@ -18,12 +19,16 @@ PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-f
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
             libmuparser-dev libgdal-dev libopenblas0-openmp time python3-gdal python3-numpy \
             libopenmpi-dev openmpi-bin valgrind clang libclang-rt-14-dev libbox2d-dev \
-            libxxhash-dev
+            libxxhash-dev libnetcdf-dev netcdf-bin python3-netcdf4 python3-xarray
+
+# QGIS (its Python bindings and MDAL provider, ~620 MB) only for `make test-qgis`.
+QGIS_PACKAGES := python3-qgis
 
 CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
                $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
 
-.PHONY: all deps build test test-sanitize test-slow test-fuzz demo bench format format-check clean
+.PHONY: all deps qgis-deps build test test-sanitize test-slow test-fuzz test-qgis demo bench format \
+        format-check clean
 
 all: build
 
@@ -36,6 +41,12 @@ deps:
 	    DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
 	fi
 
+qgis-deps:
+	@dpkg-query -W -f='$${Status}\n' $(QGIS_PACKAGES) 2>/dev/null | grep -q '^install ok installed' || \
+	    { echo "installing:" $(QGIS_PACKAGES); $(SUDO) apt-get update -qq && \
+	      DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends \
+	      $(QGIS_PACKAGES) >/dev/null; }
+
 $(BUILD)/build.ninja: CMakeLists.txt | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 
@@ -43,7 +54,11 @@ build: deps $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
 test: build
-	ctest --test-dir $(BUILD) -LE slow --output-on-failure -j $(JOBS)
+	ctest --test-dir $(BUILD) -LE 'slow|qgis' --output-on-failure -j $(JOBS)
+
+# The results opened in QGIS (tests/scripts/results.cmake, label qgis) and the run they read.
+test-qgis: build qgis-deps
+	ctest --test-dir $(BUILD) -L 'qgis' --output-on-failure -j $(JOBS)
 
 test-slow: build
 	ctest --test-dir $(BUILD) -L slow --output-on-failure

@@ -17,7 +17,8 @@
 // is an error naming it, never blamed on the case.
 //
 // What is not kept is rebuilt the same way: the mesh and the flow's matrices from the case, the
-// bodies' reaction on the flow from the bodies (Simulation::apply_reaction).
+// bodies' reaction on the flow and the debris under them from the bodies
+// (Simulation::hand_bodies_to_flow).
 #include <spdlog/spdlog.h>
 
 #include <cmath>

@@ -15,6 +15,11 @@
 //                                         every output (output.rasters)
 //   <name>_crs.wkt                        the coordinate system of every coordinate written,
 //                                         when the case has one
+//   <name>.nc                             the flow every output and its envelopes, UGRID NetCDF
+//                                         for QGIS and xarray (output.formats: ugrid)
+//   <name>_debris.gpkg                    the bodies' tracks and the jams, GeoPackage layers
+//                                         (output.formats: gpkg, a case with bodies)
+// The .vtu/.vtp/.pvd files are written with output.formats: vtk.
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -24,9 +29,11 @@
 #include "bodies/body_set.hpp"
 #include "coupling/jam_statistics.hpp"
 #include "flow/flow_engine.hpp"
+#include "geo/debris_layers.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_directory.hpp"
 #include "io/pvd_writer.hpp"
+#include "io/ugrid_writer.hpp"
 
 namespace flotsam {
 
@@ -38,6 +45,9 @@ struct RunLayout {
   bool rain = false;
   bool sources = false;
   std::vector<std::array<Vec2, 4>> decks;  // [m] bridge decks' footprints, for the pictures
+  OutputFormats formats{};
+  std::string crs_wkt;         // the case's coordinate system, or ""
+  CalendarTime time_origin{};  // the calendar time of t = 0
 };
 
 class RunOutput {
@@ -77,9 +87,10 @@ class RunOutput {
   /// Writes <name>_crs.wkt, the coordinate system (WKT) of every coordinate the run writes.
   void write_coordinate_system(const std::string& wkt) const;
 
-  /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`).
+  /// One row of jam statistics (with the backwater rise per bridge when `with_backwater`), and
+  /// with output.formats: gpkg the bodies and the jams as features of the debris layers.
   void write_jams(double t, const JamStatistics& stats, const JamGeometry& geometry,
-                  const std::vector<double>& rise, bool with_backwater);
+                  const std::vector<double>& rise, bool with_backwater, const BodySet& bodies);
 
   const std::filesystem::path& directory() const { return directory_; }
   int count() const { return static_cast<int>(times_.size()); }
@@ -87,6 +98,9 @@ class RunOutput {
 
  private:
   void write_bodies(const BodySet& bodies, double t);
+  void write_ugrid(double t, const FlowEngine& flow);
+  void write_debris_layers(double t, const JamStatistics& stats, const JamGeometry& geometry,
+                           const BodySet& bodies);
   std::vector<std::string> open_group_names(const Mesh& mesh) const;
   std::vector<std::string> balance_columns(const Mesh& mesh) const;
 
@@ -102,6 +116,11 @@ class RunOutput {
   std::optional<CsvResume> resume_;      // tables continue files of an earlier run (restart)
   std::unique_ptr<CsvWriter> trajectories_, balance_;
   std::unique_ptr<JamStatisticsWriter> jams_;
+  OutputFormats formats_;
+  std::string crs_wkt_;
+  CalendarTime time_origin_;
+  std::optional<UgridWriter> ugrid_;    // from the first output on
+  std::optional<DebrisLayers> debris_;  // from the first output with bodies on
 };
 
 }  // namespace flotsam

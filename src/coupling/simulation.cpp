@@ -91,7 +91,7 @@ void Simulation::initialize() {
     read_checkpoint(checkpoint.string());
     // The checkpoint's time was an output: a new interval counts from it.
     if (output_changed) next_output_ = time_ + case_.output.interval;
-    if (has_bodies_) apply_reaction();  // the source of the next flow step, as before the stop
+    if (has_bodies_) hand_bodies_to_flow();  // for the next flow step, as before the stop
     open_probes(CsvResume{time_});
     return;
   }
@@ -107,6 +107,9 @@ RunLayout Simulation::run_layout() const {
   for (int g : outflow_groups_) layout.open_group[g] = 1;
   layout.rain = case_.flow.rain.enabled;
   layout.sources = !case_.flow.sources.empty();
+  layout.formats = case_.output.formats;
+  layout.crs_wkt = case_.crs_wkt;
+  layout.time_origin = case_.time.origin;
   for (const Bridge& b : jam_geometry_.bridges) {
     if (!b.deck) continue;
     const Vec2 half = 0.5 * b.deck->width * b.downstream;  // [m]
@@ -152,7 +155,7 @@ void Simulation::step() {
   advance_flow(t1);
   if (has_bodies_) {
     advance_bodies(t0, t1);
-    apply_reaction();
+    hand_bodies_to_flow();
   }
   time_ = t1;
   ++step_count_;
@@ -230,18 +233,22 @@ void Simulation::check_decks_stand_above_the_bed() const {
   }
 }
 
-void Simulation::apply_reaction() {
-  if (case_.time.mode != CouplingMode::two_way) return;
+// What the flow's next step takes from the bodies: where they lie (the debris of the hazard
+// rating, (M-H2)) and, two-way, their reaction.
+void Simulation::hand_bodies_to_flow() {
   auto timed = timer_.time(Stage::reaction);
-  // Spec 5 step 3: the fluid gets -F_x, F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt), spread over
-  // the footprint; it acts during the next flow step.
+  std::vector<BodyFootprint> footprints;
   std::vector<BodyReaction> reactions;
-  reactions.reserve(bodies_.size());
-  for (int i = 0; i < bodies_.size(); ++i)
-    if (bodies_.state[i] != BodyState::gone)
-      reactions.push_back({bodies_.position[i], bodies_.half_extents(i), bodies_.angle[i],
-                           -bodies_.reaction_force[i]});
-  flow_->field().set_body_reactions(reactions);
+  const bool two_way = case_.time.mode == CouplingMode::two_way;
+  for (int i = 0; i < bodies_.size(); ++i) {
+    if (bodies_.state[i] == BodyState::gone) continue;
+    footprints.push_back({bodies_.position[i], bodies_.half_extents(i), bodies_.angle[i]});
+    // Spec 5 step 3: the fluid gets -F_x, F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt), spread
+    // over the footprint; it acts during the next flow step.
+    if (two_way) reactions.push_back({footprints.back(), -bodies_.reaction_force[i]});
+  }
+  flow_->mark_debris(footprints);
+  if (two_way) flow_->field().set_body_reactions(reactions);
 }
 
 void Simulation::check_diagnostics() {
@@ -268,7 +275,8 @@ void Simulation::write_output_if_due(bool force) {
     jammed.assign(bodies_.size(), 0);
     for (const Jam& jam : jams.jams)
       for (int i : jam.bodies) jammed[i] = 1;
-    output_->write_jams(time_, jams, jam_geometry_, backwater_rise(), reference_flow_ != nullptr);
+    output_->write_jams(time_, jams, jam_geometry_, backwater_rise(), reference_flow_ != nullptr,
+                        bodies_);
   }
   output_->write(time_, *flow_, bodies_, has_bodies_, jammed);
   while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;

@@ -93,7 +93,7 @@ class Simulation {
   std::string discharge_summary() const;
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
-  void apply_reaction();
+  void hand_bodies_to_flow();
   void check_decks_stand_above_the_bed() const;  // InputError for a deck under the ground
   // The grid of the envelopes' rasters over the mesh (output.rasters); an InputError when its
   // pixels would not fit in memory.

@@ -16,11 +16,11 @@ class FootprintWalk {
  public:
   explicit FootprintWalk(int cells) : stamp_(cells, -1) {}
 
-  /// The cells under reaction r (its index `body` among this walk's calls), from `start`.
+  /// The cells under footprint r (its index `body` among this walk's calls), from `start`.
   /// `Cells` gives centroid(i) [m], area(i) [m^2], neighbours(i) (indices; < 0: none) and
   /// counts(i) (whether cell i may carry a share).
   template <class Cells>
-  const std::vector<int>& covered(const BodyReaction& r, int start, int body, const Cells& cells) {
+  const std::vector<int>& covered(const BodyFootprint& r, int start, int body, const Cells& cells) {
     const Vec2 axis(std::cos(r.angle), std::sin(r.angle));
     const double reach = r.half_extents.norm();  // [m]
     covered_.clear();

@@ -11,6 +11,7 @@
 #include "flow/flood_envelope.hpp"
 #include "flow/flow_field.hpp"
 #include "flow/flow_state.hpp"
+#include "flow/result_fields.hpp"
 #include "flow/water_balance.hpp"
 #include "mesh/mesh.hpp"
 
@@ -58,6 +59,10 @@ class FlowEngine {
 
   /// Writes the engine's fields at the run's time t [s] as a ParaView .vtu file.
   virtual void write_fields(const std::string& path, double t) const = 0;
+  /// The same for the UGRID NetCDF results: the engine's faces over the mesh's nodes, once, and
+  /// its fields now (result_fields.hpp).
+  virtual ResultMesh result_mesh() const = 0;
+  virtual ResultFields result_fields() const = 0;
   /// Everything the engine needs to continue bit for bit (checkpoints), records named
   /// `prefix`.*; and the same read back (InputError naming the file when it does not fit).
   virtual void save(ArchiveWriter& w, const std::string& prefix) const = 0;
@@ -69,6 +74,10 @@ class FlowEngine {
   /// Called after each checkpoint: the engine drops what a restarted run would not have (so
   /// that the run that goes on and a restarted one stay the same bit for bit).
   virtual void after_checkpoint() {}
+  /// Where the bodies lie during the next step: the cells under them carry debris for the
+  /// hazard rating of the flood envelopes (hazard.hpp (M-H2)). Engines without envelopes
+  /// ignore them.
+  virtual void mark_debris(const std::vector<BodyFootprint>& /*bodies*/) {}
   /// The engine's own lines of the end-of-run summary (each ending in a newline), or "".
   virtual std::string summary() const { return ""; }
   /// Writes the flood envelopes of the run so far as GeoTIFF rasters on `grid`, files

@@ -20,12 +20,16 @@ struct FlowSample {
   int boundary_group = -1;  // when outside: the boundary group of the edge the walk left through
 };
 
-/// A body's reaction on the flow (spec 5, two-way): a force F_x [N] applied on a footprint.
-struct BodyReaction {
+/// Where a body lies: its rectangle.
+struct BodyFootprint {
   Vec2 centre;        // [m]
   Vec2 half_extents;  // [m] (L/2, l/2)
   double angle;       // theta [rad]
-  Vec2 force;         // - F_x: the force the body exerts on the water [N]
+};
+
+/// A body's reaction on the flow (spec 5, two-way): a force F_x [N] applied on its footprint.
+struct BodyReaction : BodyFootprint {
+  Vec2 force;  // - F_x: the force the body exerts on the water [N]
 };
 
 struct BatchFlow;  // flow_batch.hpp

@@ -9,6 +9,7 @@
 
 #include "bodies/body_set.hpp"
 #include "bridges/bridge_config.hpp"
+#include "core/calendar_time.hpp"
 #include "core/expression.hpp"
 #include "core/time_series.hpp"
 #include "core/vec.hpp"
@@ -181,7 +182,8 @@ struct TimeConfig {
   double spin_up_step = 20.0;       // [s] flow step of that march
   double spin_up_end = 14400.0;     // [s] longest march before the run stops
   TimeScheme scheme = TimeScheme::theta;
-  double theta = 0.6;  // [-] of TimeScheme::theta: 0.5 Crank-Nicolson, 1 backward Euler
+  double theta = 0.6;     // [-] of TimeScheme::theta: 0.5 Crank-Nicolson, 1 backward Euler
+  CalendarTime origin{};  // the calendar time (UTC) of t = 0, for the time axes of the results
 };
 
 // ---- bodies -------------------------------------------------------------------------------
@@ -273,6 +275,14 @@ struct Probe {
   int line = 0;                  // line in the case file, for messages (0: built in code)
 };
 
+/// The result files besides the tables (docs/output-format.md): ParaView's .vtu/.vtp/.pvd, the
+/// UGRID NetCDF file of the flow and the debris' GeoPackage layers (QGIS, xarray).
+struct OutputFormats {
+  bool vtk = true;
+  bool ugrid = false;
+  bool gpkg = false;
+};
+
 struct OutputConfig {
   std::string directory = "out";  // relative to the working directory
   double interval = 60.0;         // [s] between field outputs
@@ -285,6 +295,8 @@ struct OutputConfig {
   double wet_depth = 0.01;         // [m] deeper counts as wet for the flood envelopes' arrival time
                                    // and wet duration (finite-volume engine)
   double raster_resolution = 0.0;  // [m] pixel size of the envelopes' GeoTIFF rasters; 0: none
+  OutputFormats formats{};         // output.formats; by default vtk, and ugrid and gpkg as well
+                                   // when the case has a coordinate system (geodata)
 };
 
 /// One setting of a case as its file gives it (io/case_digest.hpp): the key path

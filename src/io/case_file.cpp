@@ -220,6 +220,14 @@ TimeConfig read_time(const YamlMap& m) {
     time.scheme =
         scheme->choice<TimeScheme>({{"theta", TimeScheme::theta}, {"bdf2", TimeScheme::bdf2}});
   time.theta = m.number("theta", time.theta, Range::between(0.5, 1.0));
+  if (const auto origin = m.find("origin")) {
+    const auto parsed = parse_calendar_time(origin->text());
+    if (!parsed)
+      origin->fail(fmt::format(
+          "'{}' is not a calendar time: expected \"YYYY-MM-DD hh:mm:ss\" (UTC) or \"YYYY-MM-DD\"",
+          origin->text()));
+    time.origin = *parsed;
+  }
   return time;
 }
 
@@ -268,6 +276,19 @@ OutputConfig read_output(const YamlMap& m) {
   if (const auto rasters = m.find("rasters"))
     output.raster_resolution =
         rasters->map().get("resolution", "the pixel size [m]").number(Range::positive());
+  if (const auto formats = m.find("formats")) {
+    enum class Format { vtk, ugrid, gpkg };
+    output.formats = {false, false, false};
+    for (const YamlValue& item : formats->list()) {
+      const Format f = item.choice<Format>(
+          {{"vtk", Format::vtk}, {"ugrid", Format::ugrid}, {"gpkg", Format::gpkg}});
+      bool& on = f == Format::vtk     ? output.formats.vtk
+                 : f == Format::ugrid ? output.formats.ugrid
+                                      : output.formats.gpkg;
+      if (on) item.fail("this format is listed twice");
+      on = true;
+    }
+  }
   return output;
 }
 
@@ -392,6 +413,8 @@ Case parse_case(const std::string& text, const std::string& file_name) {
   }
   c.output = read_output(root.map("output"));
   c.crs_wkt = case_coordinate_system(geodata, root);
+  if (!root.map("output").has("formats") && !c.crs_wkt.empty())  // a study on geodata: QGIS too
+    c.output.formats = {true, true, true};
   if (c.output.raster_resolution > 0.0 && c.flow.engine != FlowEngineKind::fv)
     root.map("output").get("rasters").fail(
         "the flood envelopes and their rasters come from the finite-volume engine; set "

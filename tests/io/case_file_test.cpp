@@ -188,6 +188,7 @@ TEST(CaseFile, DocumentationExampleParses) {
   EXPECT_EQ(c.bodies.contact.allowed_overlap, 0.005);
   EXPECT_EQ(c.time.scheme, TimeScheme::theta);
   EXPECT_EQ(c.time.theta, 0.6);
+  EXPECT_EQ(c.time.origin.text(), "1970-01-01 00:00:00");
   EXPECT_EQ(c.flow.engine, FlowEngineKind::fem);
   ASSERT_EQ(c.output.probes.size(), 2u);
   EXPECT_EQ(c.output.probes[1].name, "bridge");
@@ -923,6 +924,9 @@ TEST(CaseFileError, OutOfRangeGivesTheRange) {
             "case.yaml:11: time.theta: expected a number in [0.5, 1], got 0.4");
   EXPECT_EQ(error_of(edited("step: 0.5", "step: 20")),
             "case.yaml:11: time.step: the step 20 s is longer than time.end = 10 s");
+  EXPECT_EQ(error_of(edited("step: 0.5}", "step: 0.5, origin: 2023-02-29}")),
+            "case.yaml:11: time.origin: '2023-02-29' is not a calendar time: expected "
+            "\"YYYY-MM-DD hh:mm:ss\" (UTC) or \"YYYY-MM-DD\"");
   EXPECT_EQ(error_of(appended("bodies: {contact: {restitution: 1.5}}\n")),
             "case.yaml:12: bodies.contact.restitution: expected a number in [0, 1], got 1.5");
   EXPECT_EQ(error_of(edited("  initial:", "  density: -1000\n  initial:")),

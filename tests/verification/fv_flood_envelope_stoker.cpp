@@ -13,7 +13,11 @@
 //     max |u| and max H|u| within 3 % of u_m and h_m u_m (the shock's numerical overshoot);
 //   - arrival time within two cell widths / s of t_a, wet duration = end - arrival (1e-9 s);
 //   - the GeoTIFF of max H read back with GDAL: the run's coordinate system, pixels aligned on
-//     the resolution, and the pixel over the gauge holds its cell's value exactly.
+//     the resolution, and the pixel over the gauge holds its cell's value exactly;
+//   - the hazard rating (M-H1) at the gauge within 3 % of the middle state's h_m (u_m + 0.5),
+//     its class and the Australian class (M-H3) those of the middle state, and the hazard
+//     rasters' pixel over the gauge its cell's values exactly.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
@@ -26,6 +30,7 @@
 #include "../support/scratch_path.hpp"
 #include "../support/stoker.hpp"
 #include "coupling/simulation.hpp"
+#include "flow/hazard.hpp"
 #include "geo/raster.hpp"
 
 namespace flotsam {
@@ -102,7 +107,24 @@ TEST(FvFloodEnvelope, StokerMaximaArrivalAndDurationMatchTheExactSolutionAndTheG
   EXPECT_EQ(max_depth.grid().rows, 10);
   const Vec2 pixel_centre(x_gauge + 0.06, 0.22);  // a pixel near it, inside one cell
   int h2 = -1;
-  ASSERT_EQ(*max_depth.nearest(pixel_centre), e.max_depth[engine.field_cell_of(pixel_centre, h2)]);
+  const int under = engine.field_cell_of(pixel_centre, h2);
+  ASSERT_EQ(*max_depth.nearest(pixel_centre), e.max_depth[under]);
+
+  // Hazard: behind the shock the middle state holds, HR = h_m (u_m + 0.5) (no bodies: DF = 0);
+  // its class and the Australian one follow from it, and the rasters hold the cell's values.
+  const double hr = stoker.h_m * (stoker.u_m + 0.5);
+  std::printf("hazard rating at the gauge %.4f (middle state %.4f), Australian class H%g\n",
+              e.max_hazard_rating[cell], hr, e.australian_class[cell]);
+  EXPECT_NEAR(e.max_hazard_rating[cell] / hr, 1.0, 0.03);
+  EXPECT_EQ(e.australian_class[cell], australian_hazard_class(stoker.h_m, stoker.u_m));
+  EXPECT_EQ(e.hazard_rating_class()[cell], hazard_rating_class(hr));
+  for (auto [name, values] : {std::pair{"hazard_rating", e.max_hazard_rating},
+                              std::pair{"hazard_rating_class", e.hazard_rating_class()},
+                              std::pair{"australian_hazard_class", e.australian_class},
+                              std::pair{"vehicle_class", e.vehicle_class}}) {
+    const Raster raster = Raster::read((dir / fmt::format("stoker_{}.tif", name)).string(), "test");
+    EXPECT_EQ(*raster.nearest(pixel_centre), values[under]) << name;
+  }
   std::filesystem::remove_all(dir);
 }
 

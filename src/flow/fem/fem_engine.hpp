@@ -26,6 +26,8 @@ class FemEngine final : public FlowEngine {
   double volume() const override { return solver_.volume(); }
   const Mesh& mesh() const override { return solver_.mesh(); }
   void write_fields(const std::string& path, double t) const override;
+  ResultMesh result_mesh() const override;
+  ResultFields result_fields() const override;
   std::string summary() const override;
   void save(ArchiveWriter& w, const std::string& prefix) const override;
   void restore(ArchiveReader& r, const std::string& prefix) override;

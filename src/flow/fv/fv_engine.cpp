@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "flow/bed.hpp"
+#include "flow/body_footprint.hpp"
 #include "flow/friction_map.hpp"
 #include "io/binary_archive.hpp"
 #include "io/vtu_writer.hpp"
@@ -25,6 +26,7 @@ void FvEngine::initialize() {
   solver_.initialize();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);
   envelope_.update(solver_.state().h, solver_.state().hu, solver_.state().hv, 0.0, 0.0);
+  envelope_.end_step({});
   solver_.set_sub_step_observer([this](double t, double dt) {
     const ConservedState& U = solver_.state();
     envelope_.update(U.h, U.hu, U.hv, t, dt);
@@ -35,7 +37,9 @@ void FvEngine::initialize() {
 }
 
 void FvEngine::step(double dt) {
+  envelope_.start_step();
   solver_.advance(dt);
+  envelope_.end_step(debris_);
   field_->advance_to_state();
   nodal_valid_ = false;
 }
@@ -66,6 +70,7 @@ void FvEngine::settle(const TimeConfig& time) {
   solver_.restart_water_balance();
   envelope_.reset(solver_.cells().cell_count, case_.output.wet_depth);  // the run starts now
   envelope_.update(steady.h, steady.hu, steady.hv, 0.0, 0.0);
+  envelope_.end_step({});
   field_->reset_to_state();
   nodal_valid_ = false;
 }
@@ -151,6 +156,11 @@ void FvEngine::write_fields(const std::string& path, double t) const {
   fields.add_cell_scalar("max H|u| [m^2/s]", envelope_.max_unit_discharge);
   fields.add_cell_scalar("arrival time [s]", envelope_.arrival);
   fields.add_cell_scalar("wet duration [s]", envelope_.wet_duration);
+  fields.add_cell_scalar("max hazard rating HR [-]", envelope_.max_hazard_rating);
+  const std::vector<double> rating_class = envelope_.hazard_rating_class();
+  fields.add_cell_scalar("hazard rating class (1-4)", rating_class);
+  fields.add_cell_scalar("Australian hazard class (H1-H6)", envelope_.australian_class);
+  fields.add_cell_scalar("vehicles unstable (0-3)", envelope_.vehicle_class);
   fields.add_p1_scalar("eta (nodal) [m]", nodal.eta);
   fields.add_point_vector("u (nodal) [m/s]", nodal_u);
   fields.add_point_scalar("z_b (nodal) [m]", field_->node_bed());
@@ -173,18 +183,20 @@ void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
 }
 
 void FvEngine::restore(ArchiveReader& r, const std::string& prefix) {
-  restore_state(r, prefix);
+  restore_state(r, prefix, true);
   field_->reset_to_state();
   nodal_valid_ = false;
 }
 
+// The shared flow's step, with this run's bodies in its hazard rating, as step() folds them.
 void FvEngine::restore_step(ArchiveReader& r, const std::string& prefix) {
-  restore_state(r, prefix);
+  restore_state(r, prefix, false);
+  envelope_.end_step(debris_);
   field_->advance_to_state();
   nodal_valid_ = false;
 }
 
-void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix) {
+void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix, bool own_rating) {
   ConservedState U;
   U.time = r.read_value<double>(prefix + ".time");
   U.h = r.read<double>(prefix + ".h");
@@ -201,7 +213,35 @@ void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix) {
   const auto s = r.read<double>(prefix + ".sub_steps");
   solver_.restore_sub_steps(
       {static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1), s.at(2)});
-  envelope_.restore(r, prefix);
+  envelope_.restore(r, prefix, own_rating);
+}
+
+namespace {
+
+/// Every cell may carry debris, wet or dry (the walk's Cells, body_footprint.hpp).
+struct AllCells {
+  const CellMesh& c;
+  const Vec2& centroid(int i) const { return c.centroid[i]; }
+  double area(int i) const { return c.area[i]; }
+  const std::array<int, 3>& neighbours(int i) const { return c.neighbour[i]; }
+  bool counts(int /*i*/) const { return true; }
+};
+
+}  // namespace
+
+// The cells under each body, and the one holding its centre when its footprint holds no cell's
+// centroid (a body smaller than the cells).
+void FvEngine::mark_debris(const std::vector<BodyFootprint>& bodies) {
+  const CellMesh& c = solver_.cells();
+  debris_.assign(bodies.empty() ? 0 : c.cell_count, 0);
+  FootprintWalk walk(c.cell_count);
+  for (int k = 0; k < static_cast<int>(bodies.size()); ++k) {
+    int hint = -1;
+    const int start = field_->cell_of(bodies[k].centre, hint);
+    if (start < 0) continue;
+    debris_[start] = 1;
+    for (int i : walk.covered(bodies[k], start, k, AllCells{c})) debris_[i] = 1;
+  }
 }
 
 std::string FvEngine::summary() const {
@@ -212,10 +252,29 @@ std::string FvEngine::summary() const {
                                                 s.smallest, s.count > 0 ? s.total / s.count : 0.0)
                                   : std::string("no Courant limit (the water was dry and still)");
   return fmt::format(
-      "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet (deeper "
-      "than {:g} m) {:.1f} % of the area\n",
-      solver_.cells().cell_count, s.count, s.rejected, courant, case_.output.wet_depth,
-      100.0 * solver_.wet_fraction());
+             "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet "
+             "(deeper than {:g} m) {:.1f} % of the area\n",
+             solver_.cells().cell_count, s.count, s.rejected, courant, case_.output.wet_depth,
+             100.0 * solver_.wet_fraction()) +
+         hazard_summary();
+}
+
+// The areas where the hazard reached the classes people act on (docs/model.md "Flood hazard").
+std::string FvEngine::hazard_summary() const {
+  const CellMesh& c = solver_.cells();
+  const std::vector<double> rating = envelope_.hazard_rating_class();
+  double largest = 0.0, extreme = 0.0, h5 = 0.0, cars = 0.0;  // [-], then [m^2]
+  for (int i = 0; i < c.cell_count; ++i) {
+    if (rating[i] == 0.0) continue;  // never wet
+    largest = std::max(largest, envelope_.max_hazard_rating[i]);
+    if (rating[i] == 4.0) extreme += c.area[i];
+    if (envelope_.australian_class[i] >= 5.0) h5 += c.area[i];
+    if (envelope_.vehicle_class[i] >= 1.0) cars += c.area[i];
+  }
+  return fmt::format(
+      "flood hazard     largest rating HR {:.3g}; area of HR > 2 (danger for all) {:.4g} m^2, "
+      "of H5-H6 {:.4g} m^2, where small cars lose stability {:.4g} m^2\n",
+      largest, extreme, h5, cars);
 }
 
 std::vector<std::string> FvEngine::write_envelope_rasters(const std::string& prefix,

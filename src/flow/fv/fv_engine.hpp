@@ -31,9 +31,12 @@ class FvEngine final : public FlowEngine {
   double volume() const override { return solver_.volume(); }
   const Mesh& mesh() const override { return mesh_; }
   void write_fields(const std::string& path, double t) const override;
+  ResultMesh result_mesh() const override;
+  ResultFields result_fields() const override;
   void save(ArchiveWriter& w, const std::string& prefix) const override;
   void restore(ArchiveReader& r, const std::string& prefix) override;
   void restore_step(ArchiveReader& r, const std::string& prefix) override;
+  void mark_debris(const std::vector<BodyFootprint>& bodies) override;
   std::string summary() const override;
   std::vector<std::string> write_envelope_rasters(const std::string& prefix,
                                                   const RasterGrid& grid) const override;
@@ -44,8 +47,10 @@ class FvEngine final : public FlowEngine {
   const FiniteVolumeSolver& solver() const { return solver_; }
 
  private:
-  /// The solver's state, balance, sub-step counts and envelopes as save() wrote them.
-  void restore_state(ArchiveReader& r, const std::string& prefix);
+  std::string hazard_summary() const;
+  /// The solver's state, balance, sub-step counts and envelopes as save() wrote them; the
+  /// envelopes' running hazard rating too when `own_rating` (not a shared flow's step).
+  void restore_state(ArchiveReader& r, const std::string& prefix, bool own_rating);
 
   const Mesh& mesh_;
   const Case& case_;
@@ -53,6 +58,7 @@ class FvEngine final : public FlowEngine {
   std::shared_ptr<const PointLocator> locator_;  // for the field, or nullptr
   std::unique_ptr<FvFlowField> field_;
   FloodEnvelope envelope_;                 // per cell, updated after every sub-step
+  std::vector<std::uint8_t> debris_;       // per cell: 1 under a body (mark_debris), or empty
   mutable std::vector<int> raster_cells_;  // the cell under each pixel of the envelopes' rasters
   mutable FlowState nodal_;                // the nodal view, computed when asked
   mutable std::vector<std::uint8_t> nodal_wet_;  // per node: a wet cell touches it
