@@ -2,7 +2,7 @@
 """Loads flotsam's UGRID NetCDF result in QGIS itself (python3-qgis, headless) as a mesh layer
 and checks it against the file as netCDF4 reads it: the layer is valid, its CRS is the expected
 EPSG code, its extent is the nodes' bounding box, its dataset groups are the file's variables
-(scalars and the velocity as one vector group) on faces, its times are the file's (QGIS counts
+(scalars and the velocity as one vector group) on faces or vertices as the file says, its times are the file's (QGIS counts
 hours from the time origin, which it reads as the reference time), and the values at a few faces
 and times are those written (1e-12 relative; the fill value reads back as NaN in both).
 
@@ -97,8 +97,12 @@ def main():
                 fail(f"no dataset group {group_name!r} (variable {name}); QGIS has "
                      f"{sorted(groups)}")
             g, meta = groups[group_name]
-            if meta.dataType() != QgsMeshDatasetGroupMetadata.DataOnFaces:
-                fail(f"group {group_name!r} is not on faces")
+            on_faces = var.location == "face"
+            want_type = (QgsMeshDatasetGroupMetadata.DataOnFaces if on_faces
+                         else QgsMeshDatasetGroupMetadata.DataOnVertices)
+            if meta.dataType() != want_type:
+                fail(f"group {group_name!r} is not on the {var.location}s")
+            count = faces if on_faces else len(x)
             if meta.isScalar() == vector:
                 fail(f"group {group_name!r}: {'scalar' if meta.isScalar() else 'vector'}, "
                      f"expected {'vector' if vector else 'scalar'}")
@@ -113,16 +117,17 @@ def main():
                     if not same(hours * 3600.0, float(times[step])):
                         fail(f"{group_name!r} step {step}: {hours} h, the file "
                              f"{times[step]} s")
-                block = provider.datasetValues(index, 0, faces)
+                block = provider.datasetValues(index, 0, count)
                 data = var[step] if timed else var[:]
-                for k in sorted({0, faces // 3, faces // 2, faces - 1}):
+                for k in sorted({0, count // 3, count // 2, count - 1}):
                     value = block.value(k)
                     got = value.scalar() if not vector else (
                         value.x() if long_name.endswith("x-component") else value.y())
                     want = float(data[k])
                     want = math.nan if want == float(var._FillValue) else want
                     if not same(got, want):
-                        fail(f"{name} at face {k}, step {step}: QGIS {got}, the file {want}")
+                        fail(f"{name} at {var.location} {k}, step {step}: QGIS {got}, "
+                             f"the file {want}")
                     checked += 1
         print(f"QGIS {Qgis.version()} opened {args.file}: EPSG:{args.epsg}, "
               f"{len(x)} vertices, {faces} faces, {len(groups)} dataset groups, "

@@ -38,3 +38,23 @@ flotsam_results_test(qgis_opens_the_ugrid_mesh qgis
 flotsam_results_test(qgis_opens_the_debris_tracks qgis
                      ${scripts}/check_debris_gpkg.py ${results_run}/tiny_geo_debris.gpkg
                      --layer tracks --expect-features 10 --expect-epsg 32633 --require-qgis)
+
+# The finite-element engine: its fields on the nodes (tiny_fem_geo_case.yaml, UGRID only).
+set(fem_run ${results_work}/tiny_fem_geo)
+add_test(NAME results.run_tiny_fem_geo_case
+         COMMAND ${CMAKE_COMMAND}
+                 "-DCOMMAND=$<TARGET_FILE:flotsam>;run;${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_fem_geo_case.yaml;-o;${fem_run};--overwrite;-q"
+                 -DEXPECT_EXIT=0 "-DEXPECT_REGEX=simulated +4.0 s"
+                 -DWORKDIR=${results_work} -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
+set_tests_properties(results.run_tiny_fem_geo_case PROPERTIES LABELS "results"
+                     FIXTURES_SETUP tiny_fem_geo_results ENVIRONMENT "${test_environment}")
+add_test(NAME results.ugrid_structure_fem
+         COMMAND ${FLOTSAM_VTK_PYTHON} ${scripts}/check_ugrid.py ${fem_run}/tiny_fem_geo.nc
+                 --expect-times 3)
+add_test(NAME results.qgis_opens_the_fem_ugrid_mesh
+         COMMAND ${FLOTSAM_VTK_PYTHON} ${scripts}/check_ugrid_qgis.py ${fem_run}/tiny_fem_geo.nc
+                 --epsg 32633 --origin "2024-06-01 00:00:00")
+set_tests_properties(results.ugrid_structure_fem PROPERTIES LABELS "results"
+                     FIXTURES_REQUIRED tiny_fem_geo_results)
+set_tests_properties(results.qgis_opens_the_fem_ugrid_mesh PROPERTIES LABELS "qgis"
+                     FIXTURES_REQUIRED tiny_fem_geo_results)
