@@ -2,14 +2,14 @@
 #   make demo   build and run the paper's bridge case into out/
 #   make test   build and run the whole test suite (CTest)
 #   make bench  build and run the benchmarks (figures go to docs/performance.md)
-#   make test-fuzz  fuzz the case and mesh readers for FUZZ_SECONDS each (libFuzzer, clang)
+#   make test-fuzz  fuzz the case, mesh, raster and vector readers for FUZZ_SECONDS each (libFuzzer)
 #   make test-qgis  open a run's UGRID and GeoPackage results in QGIS itself (python3-qgis)
 
 BUILD     ?= build
 SAN_BUILD ?= build-sanitize
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= case mesh
+FUZZ_TARGETS ?= case mesh raster vector
 JOBS      ?= $(shell nproc)
 CI        ?=
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -69,14 +69,14 @@ test-sanitize: deps
 	LSAN_OPTIONS=suppressions=$(CURDIR)/cmake/lsan.supp \
 	    ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
-# Fuzzing (tests/fuzz): the case reader and the mesh reader under libFuzzer and AddressSanitizer,
+# Fuzzing (tests/fuzz): the case, mesh, raster and vector readers under libFuzzer and AddressSanitizer,
 # FUZZ_SECONDS each, mutating the corpus in tests/fuzz/corpus; new inputs go to
 # $(FUZZ_BUILD)/corpus, and an input that crashes is saved as $(FUZZ_BUILD)/crash-* (add it to
 # the corpus once fixed).
 test-fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_case_reader fuzz_mesh_reader
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS:%=fuzz_%_reader)
 	@for t in $(FUZZ_TARGETS); do mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
 	    echo "== fuzzing the $$t reader for $(FUZZ_SECONDS) s"; \
 	    ASAN_OPTIONS=detect_leaks=0 $(FUZZ_BUILD)/tests/fuzz/fuzz_$${t}_reader \

@@ -259,6 +259,28 @@ TEST(CaseFile, TablesBecomeTimeSeries) {
   EXPECT_EQ(eta(500.0), 1.1);
 }
 
+// A table from a CSV file beside the case (docs/case-format.md "Tables from files"): the same
+// series as written inline, the file one of the case's inputs (fingerprinted for restarts).
+TEST(CaseFile, TablesFromFilesBecomeTimeSeries) {
+  const auto dir = test::fresh_test_folder("flotsam_case_table_file");
+  std::ofstream(dir / "eta.csv") << "t [s],eta [m]\n0,1.0\n60,1.2\n120,1.1\n";
+  const std::string case_path = (dir / "case.yaml").string();
+  const Case c = parse_case(edited("value: 1.0}", "value: {file: eta.csv}}"), case_path);
+  const TimeSeries& eta = c.flow.boundaries[0].value;
+  EXPECT_DOUBLE_EQ(eta(30.0), 1.1);
+  EXPECT_DOUBLE_EQ(eta(90.0), 1.15);
+  EXPECT_EQ(eta(500.0), 1.1);
+  ASSERT_EQ(c.input_files.size(), 1u);
+  EXPECT_EQ(c.input_files[0].key, "flow.boundaries.inflow.value.file");
+  EXPECT_EQ(c.input_files[0].path, (dir / "eta.csv").string());
+  std::ofstream(dir / "eta.csv") << "t [s],eta [m]\n0,1.0\n0,1.2\n";
+  EXPECT_EQ(error_of(edited("value: 1.0}", "value: {file: eta.csv}}"), case_path),
+            (dir / "eta.csv").string() +
+                ":3: t = 0 does not come after the previous row's t = 0; a table's t must be "
+                "strictly increasing");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CaseFile, SectionsOfEveryKindAreRead) {
   const Case c = parse_case(appended(R"(bed: {level: 2, slope: 0.001}
 bodies:
@@ -685,8 +707,8 @@ TEST(CaseFileError, RainIsChecked) {
             "case.yaml:6: flow.rain.intensity: missing; this key is required: i [mm/h], a number "
             "or a hyetograph [[t, i], ...]");
   EXPECT_EQ(error_of(rain("{intensity: {t: 0}}")),
-            "case.yaml:6: flow.rain.intensity: expected a number >= 0 or a table [[t, value], "
-            "...], got a map");
+            "case.yaml:6: flow.rain.intensity: expected a number >= 0, a table [[t, value], ...] or "
+            "{file: table.csv}, got a map");
   EXPECT_EQ(error_of(rain("{intensity: 10, duration: 60}")),
             "case.yaml:6: flow.rain.duration: unknown key; allowed here: intensity, infiltration, "
             "raster");
@@ -904,8 +926,8 @@ TEST(CaseFileError, WrongTypeSaysWhatWasExpectedAndFound) {
       "case.yaml:4: flow.friction: expected a map of keys, got a list");
   EXPECT_EQ(error_of(edited("outflow: {type: elevation, value: 0.9}",
                             "outflow: {type: elevation, value: {t: 0}}")),
-            "case.yaml:8: flow.boundaries.outflow.value: expected a number or a table [[t, "
-            "value], ...], got a map");
+            "case.yaml:8: flow.boundaries.outflow.value: expected a number, a table [[t, value], "
+            "...] or {file: table.csv}, got a map");
   EXPECT_EQ(error_of(appended("output: {overwrite: maybe}\n")),
             "case.yaml:12: output.overwrite: expected true or false, got 'maybe'");
   EXPECT_EQ(error_of(appended("bodies: {physics: {drag_points: 2.5}}\n")),
