@@ -2,8 +2,11 @@
 // in the same state, bit for bit, as the run that was never stopped: flow, bodies (with
 // contacts and bodies released from a line by a seeded random stream), water balance, and the
 // tables it writes.
+#include <gdal_priv.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <netcdf.h>
+#include <ogrsf_frmts.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +19,7 @@
 #include "core/error.hpp"
 #include "coupling/simulation.hpp"
 #include "flow/fv/fv_engine.hpp"
+#include "geo/gdal_support.hpp"
 #include "geo/raster.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -155,8 +159,44 @@ TEST(Restart, WritesAMissingTableAgainWithItsHeader) {
   }
 }
 
-// The finite-volume engine's flood envelopes (running maxima, arrival, wet duration) and their
-// rasters continue across a restart as if the run had never stopped.
+/// Every value of NetCDF variable `name` in `path` (the UGRID results).
+std::vector<double> netcdf_values(const fs::path& path, const char* name) {
+  int id = -1, var = -1, dims = 0, dim[NC_MAX_VAR_DIMS];
+  EXPECT_EQ(nc_open(path.c_str(), NC_NOWRITE, &id), NC_NOERR) << path;
+  EXPECT_EQ(nc_inq_varid(id, name, &var), NC_NOERR) << name;
+  nc_inq_varndims(id, var, &dims);
+  nc_inq_vardimid(id, var, dim);
+  std::size_t count = 1;
+  for (int k = 0; k < dims; ++k) {
+    std::size_t length = 0;
+    nc_inq_dimlen(id, dim[k], &length);
+    count *= length;
+  }
+  std::vector<double> values(count);
+  EXPECT_EQ(nc_get_var_double(id, var, values.data()), NC_NOERR) << name;
+  nc_close(id);
+  return values;
+}
+
+/// The body ids and times of the debris tracks in `path`, in order.
+std::vector<std::pair<long, double>> tracks_of(const fs::path& path) {
+  gdal::Dataset d(static_cast<GDALDataset*>(
+      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+  std::vector<std::pair<long, double>> rows;
+  if (!d) {
+    ADD_FAILURE() << "cannot open " << path;
+    return rows;
+  }
+  OGRLayer& tracks = *d->GetLayerByName("tracks");
+  for (const auto& f : tracks)
+    rows.emplace_back(static_cast<long>(f->GetFieldAsInteger64("body")),
+                      f->GetFieldAsDouble("t_s"));
+  return rows;
+}
+
+// The finite-volume engine's flood envelopes (running maxima, arrival, wet duration, hazard) and
+// their rasters continue across a restart as if the run had never stopped; so do the UGRID file
+// and the debris layers.
 TEST(Restart, KeepsTheFloodEnvelopesBitForBit) {
   const fs::path base = test::scratch_path("flotsam_restart_envelope_test");
   fs::remove_all(base);
@@ -166,6 +206,7 @@ TEST(Restart, KeepsTheFloodEnvelopesBitForBit) {
     c.flow.engine = FlowEngineKind::fv;
     c.flow.initial_eta = Expression("x < 50 ? 1.6 : 1.0", "test");  // a surge down the channel
     c.output.raster_resolution = 2.0;
+    c.output.formats = {true, true, true};
     return c;
   };
   auto options = [&](const std::string& dir, bool restart) {
@@ -185,6 +226,9 @@ TEST(Restart, KeepsTheFloodEnvelopesBitForBit) {
   EXPECT_EQ(a.max_speed, b.max_speed);
   EXPECT_EQ(a.max_unit_discharge, b.max_unit_discharge);
   EXPECT_EQ(a.wet_duration, b.wet_duration);
+  EXPECT_EQ(a.max_hazard_rating, b.max_hazard_rating);
+  EXPECT_EQ(a.australian_class, b.australian_class);
+  EXPECT_EQ(a.vehicle_class, b.vehicle_class);
   ASSERT_EQ(a.arrival.size(), b.arrival.size());
   for (std::size_t i = 0; i < a.arrival.size(); ++i)
     EXPECT_TRUE(a.arrival[i] == b.arrival[i] ||
@@ -194,6 +238,16 @@ TEST(Restart, KeepsTheFloodEnvelopesBitForBit) {
   const Raster rb = Raster::read((base / "split" / "restart_max_depth.tif").string(), "test");
   for (int r = 0; r < ra.grid().rows; ++r)
     for (int c = 0; c < ra.grid().columns; ++c) EXPECT_EQ(ra.at(c, r), rb.at(c, r));
+  for (const char* name : {"time", "depth", "ux", "hazard_rating", "max_depth"}) {
+    const auto whole_values = netcdf_values(base / "whole" / "restart.nc", name);
+    EXPECT_EQ(whole_values, netcdf_values(base / "split" / "restart.nc", name)) << name;
+    if (std::string(name) == "time") {
+      EXPECT_EQ(whole_values, (std::vector<double>{0, 4, 8, 12}));
+    }
+  }
+  const auto tracks = tracks_of(base / "whole" / "restart_debris.gpkg");
+  EXPECT_EQ(tracks, tracks_of(base / "split" / "restart_debris.gpkg"));
+  EXPECT_GE(tracks.size(), 4u);  // the bodies at each of the 4 outputs
   fs::remove_all(base);
 }
 
