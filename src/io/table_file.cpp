@@ -1,10 +1,10 @@
 #include "io/table_file.hpp"
 
 #include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "core/error.hpp"
@@ -51,12 +51,12 @@ std::vector<std::pair<double, double>> read_table_file(
     if (text.find_first_not_of(" \t,") == std::string_view::npos) continue;
     if (!parse_numbers(text, numbers)) {
       if (rows.empty() && number == 1) continue;  // the header
-      throw_input_error("{}:{}: expected two numbers '{}, value', got '{}'", path, number,
-                        abscissa, line);
+      throw_input_error("{}:{}: expected two numbers '{}, value', got '{}'", path, number, abscissa,
+                        line);
     }
     if (numbers.size() != 2)
-      throw_input_error("{}:{}: expected two numbers '{}, value', got {}", path, number,
-                        abscissa, numbers.size());
+      throw_input_error("{}:{}: expected two numbers '{}, value', got {}", path, number, abscissa,
+                        numbers.size());
     if (!rows.empty() && !(numbers[0] > rows.back().first))
       throw_input_error(
           "{}:{}: {} = {} does not come after the previous row's {} = {}; a table's {} must be "

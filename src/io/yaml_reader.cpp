@@ -170,10 +170,10 @@ std::string YamlValue::origin() const {
 TimeSeries YamlValue::series(std::string_view abscissa, Range range) const {
   if (node_.IsScalar()) return TimeSeries(number(range));
   if (node_.IsMap() && node_["file"]) {  // {file: table.csv}, a long table (io/table_file.hpp)
-    const std::string folder =
-        std::filesystem::path(document_->file_name()).parent_path().string();
+    const std::string folder = std::filesystem::path(document_->file_name()).parent_path().string();
     const std::string path =
-        map().get("file", "a CSV file of two columns: " + std::string(abscissa) + ", value")
+        map()
+            .get("file", "a CSV file of two columns: " + std::string(abscissa) + ", value")
             .input_path(folder);
     return TimeSeries(read_table_file(path, abscissa, [&](double value) {
       return range.contains(value) ? std::string() : range.describe();

@@ -706,9 +706,10 @@ TEST(CaseFileError, RainIsChecked) {
   EXPECT_EQ(error_of(rain("{infiltration: 1}")),
             "case.yaml:6: flow.rain.intensity: missing; this key is required: i [mm/h], a number "
             "or a hyetograph [[t, i], ...]");
-  EXPECT_EQ(error_of(rain("{intensity: {t: 0}}")),
-            "case.yaml:6: flow.rain.intensity: expected a number >= 0, a table [[t, value], ...] or "
-            "{file: table.csv}, got a map");
+  EXPECT_EQ(
+      error_of(rain("{intensity: {t: 0}}")),
+      "case.yaml:6: flow.rain.intensity: expected a number >= 0, a table [[t, value], ...] or "
+      "{file: table.csv}, got a map");
   EXPECT_EQ(error_of(rain("{intensity: 10, duration: 60}")),
             "case.yaml:6: flow.rain.duration: unknown key; allowed here: intensity, infiltration, "
             "raster");

@@ -53,8 +53,7 @@ TEST(TableFile, FaultsAreNamedByFileAndLine) {
     read_table_file(missing, "t", [](double) { return std::string(); });
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "cannot open the table file '" + missing + "': no such file");
+    EXPECT_EQ(std::string(e.what()), "cannot open the table file '" + missing + "': no such file");
   }
   std::filesystem::remove_all(dir);
 }
