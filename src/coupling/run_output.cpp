@@ -34,10 +34,13 @@ RunOutput::RunOutput(const std::filesystem::path& directory, const std::string& 
       crs_wkt_(layout.crs_wkt),
       time_origin_(layout.time_origin) {
   const auto write_boundary = [&](const std::string& path) { write_boundary_vtp(path, mesh); };
-  if (formats_.vtk && shared_folder_.empty())
-    write_boundary((directory_ / "boundary.vtp").string());
-  else if (formats_.vtk)
-    write_shared_file(shared_folder_, "boundary.vtp", directory_ / "boundary.vtp", write_boundary);
+  if (formats_.vtk) {
+    if (shared_folder_.empty())
+      write_boundary((directory_ / "boundary.vtp").string());
+    else
+      write_shared_file(shared_folder_, "boundary.vtp", directory_ / "boundary.vtp",
+                        write_boundary);
+  }
   write_run_description((directory_ / "run.bin").string(), {name, mesh, open_group_, layout.decks});
   balance_ = std::make_unique<CsvWriter>((directory_ / (name + "_balance.csv")).string(),
                                          balance_columns(mesh));
@@ -209,15 +212,14 @@ void RunOutput::write_debris_layers(double t, const JamStatistics& stats,
                        jam.thickness};
     for (int i : jam.bodies) {
       jam_of[i] = j;
-      outline.footprints.push_back(
-          footprint_corners(bodies.position[i], bodies.half_extents(i), bodies.angle[i]));
+      outline.footprints.push_back(body_corners(bodies, i));
     }
     if (jam.bridge >= 0) {                // covered share of the bridge's free width
       double covered = 0.0, width = 0.0;  // [m]
       const auto& gaps = geometry.bridges[jam.bridge].gaps;
       for (std::size_t g = 0; g < gaps.size(); ++g) {
-        covered += jam.gap_blockage[g] * (gaps[g].upper - gaps[g].lower);
-        width += gaps[g].upper - gaps[g].lower;
+        covered += jam.gap_blockage[g] * gaps[g].width();
+        width += gaps[g].width();
       }
       outline.blockage = width > 0.0 ? covered / width : 0.0;
     }

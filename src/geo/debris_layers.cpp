@@ -177,12 +177,6 @@ void DebrisLayers::CloseDataset::operator()(GDALDataset* dataset) const {
   GDALClose(dataset);
 }
 
-std::array<Vec2, 4> footprint_corners(const Vec2& centre, const Vec2& half_extents, double angle) {
-  const Vec2 e(std::cos(angle), std::sin(angle));  // the length axis
-  const Vec2 a = half_extents.x() * e, b = half_extents.y() * perp(e);
-  return {Vec2(centre - a - b), Vec2(centre + a - b), Vec2(centre + a + b), Vec2(centre - a + b)};
-}
-
 DebrisLayers::DebrisLayers(const std::string& path, const std::string& crs_wkt,
                            const CalendarTime& time_origin)
     // Members are initialised in this order: a bad origin leaves an existing file as it was.

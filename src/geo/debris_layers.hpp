@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/calendar_time.hpp"
+#include "core/footprint_corners.hpp"
 #include "core/vec.hpp"
 
 class GDALDataset;
@@ -99,9 +100,5 @@ class DebrisLayers {
   OGRLayer* tracks_ = nullptr;  // owned by dataset_
   OGRLayer* jams_ = nullptr;
 };
-
-/// The four corners of a footprint, counter-clockwise: with e = (cos angle, sin angle) the length
-/// axis and n = perp(e), centre -+ L/2 e -+ l/2 n, starting at the rear right (- L/2, - l/2).
-std::array<Vec2, 4> footprint_corners(const Vec2& centre, const Vec2& half_extents, double angle);
 
 }  // namespace flotsam

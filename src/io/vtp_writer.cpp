@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "core/footprint_corners.hpp"
 #include "io/vtk_xml.hpp"
 
 namespace flotsam {
@@ -19,12 +20,7 @@ void BodyFields::add_vector(std::string name, std::span<const Vec2> values) {
 }
 
 std::array<Vec2, 4> body_corners(const BodySet& bodies, int i) {
-  const Vec2 a = bodies.axis(i);          // long axis
-  const Vec2 n = perp(a);                 // short axis
-  const Vec2 h = bodies.half_extents(i);  // (L/2, l/2) [m]
-  const Vec2& G = bodies.position[i];
-  return {G - h.x() * a - h.y() * n, G + h.x() * a - h.y() * n, G + h.x() * a + h.y() * n,
-          G - h.x() * a + h.y() * n};
+  return footprint_corners(bodies.position[i], bodies.half_extents(i), bodies.angle[i]);
 }
 
 namespace {

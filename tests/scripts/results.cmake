@@ -1,60 +1,55 @@
 # Results for QGIS and Python (issue 40): a tiny flood study on geodata (tiny_geo_case.yaml) run
 # once, then its UGRID NetCDF file read with xarray against the ParaView files of the same run,
 # its debris GeoPackage read with GDAL, and (label qgis, `make test-qgis`: python3-qgis is a
-# 620 MB install) both opened in QGIS itself.
+# 620 MB install) both opened in QGIS itself; the finite-element engine's UGRID file likewise.
 set(results_work ${CMAKE_CURRENT_BINARY_DIR}/results_work)
 file(MAKE_DIRECTORY ${results_work})
-set(results_run ${results_work}/tiny_geo)
-set(tiny_geo_origin "2024-06-01 06:30:00")
+set(scripts ${CMAKE_CURRENT_SOURCE_DIR}/scripts)
 
-add_test(NAME results.run_tiny_geo_case
-         COMMAND ${CMAKE_COMMAND}
-                 "-DCOMMAND=$<TARGET_FILE:flotsam>;run;${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_geo_case.yaml;-o;${results_run};--overwrite;-q"
-                 -DEXPECT_EXIT=0 "-DEXPECT_REGEX=flood hazard +largest rating HR"
-                 -DWORKDIR=${results_work} -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
-set_tests_properties(results.run_tiny_geo_case PROPERTIES LABELS "results"
-                     FIXTURES_SETUP tiny_geo_results ENVIRONMENT "${test_environment}")
-
-function(flotsam_results_test name label)
-  add_test(NAME results.${name} COMMAND ${FLOTSAM_VTK_PYTHON} ${ARGN})
-  set_tests_properties(results.${name} PROPERTIES LABELS "${label}"
-                       FIXTURES_REQUIRED tiny_geo_results)
+# results.run_<case>: runs scripts/<case>_case.yaml into results_work/<case>, expecting `regex`
+# in its output; the fixture <case>_results for the checks of its files.
+function(flotsam_results_run case regex)
+  add_test(NAME results.run_${case}_case
+           COMMAND ${CMAKE_COMMAND}
+                   "-DCOMMAND=$<TARGET_FILE:flotsam>;run;${scripts}/${case}_case.yaml;-o;${results_work}/${case};--overwrite;-q"
+                   -DEXPECT_EXIT=0 "-DEXPECT_REGEX=${regex}"
+                   -DWORKDIR=${results_work} -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
+  set_tests_properties(results.run_${case}_case PROPERTIES LABELS "results"
+                       FIXTURES_SETUP ${case}_results ENVIRONMENT "${test_environment}")
 endfunction()
 
-set(scripts ${CMAKE_CURRENT_SOURCE_DIR}/scripts)
-flotsam_results_test(ugrid_equals_the_vtu_files results
+# results.<name>: a Python check (the arguments after `label`) of the files of run `case`.
+function(flotsam_results_test name case label)
+  add_test(NAME results.${name} COMMAND ${FLOTSAM_VTK_PYTHON} ${ARGN})
+  set_tests_properties(results.${name} PROPERTIES LABELS "${label}"
+                       FIXTURES_REQUIRED ${case}_results)
+endfunction()
+
+flotsam_results_run(tiny_geo "flood hazard +largest rating HR")
+set(results_run ${results_work}/tiny_geo)
+set(tiny_geo_origin "2024-06-01 06:30:00")
+flotsam_results_test(ugrid_equals_the_vtu_files tiny_geo results
                      ${scripts}/compare_ugrid_vtk.py ${results_run} tiny_geo
                      --origin ${tiny_geo_origin})
 # UGRID structure (mesh topology, start_index, CRS, time decoding) at 5 outputs (0, 6, ..., 24 s).
-flotsam_results_test(ugrid_structure results
+flotsam_results_test(ugrid_structure tiny_geo results
                      ${scripts}/check_ugrid.py ${results_run}/tiny_geo.nc --expect-times 5)
 # 2 logs at 5 outputs (0, 6, ..., 24 s), in the domain to the end.
-flotsam_results_test(debris_layers_tracks results
+flotsam_results_test(debris_layers_tracks tiny_geo results
                      ${scripts}/check_debris_gpkg.py ${results_run}/tiny_geo_debris.gpkg
                      --layer tracks --expect-features 10 --expect-epsg 32633)
-flotsam_results_test(qgis_opens_the_ugrid_mesh qgis
+flotsam_results_test(qgis_opens_the_ugrid_mesh tiny_geo qgis
                      ${scripts}/check_ugrid_qgis.py ${results_run}/tiny_geo.nc --epsg 32633
                      --origin ${tiny_geo_origin})
-flotsam_results_test(qgis_opens_the_debris_tracks qgis
+flotsam_results_test(qgis_opens_the_debris_tracks tiny_geo qgis
                      ${scripts}/check_debris_gpkg.py ${results_run}/tiny_geo_debris.gpkg
                      --layer tracks --expect-features 10 --expect-epsg 32633 --require-qgis)
 
 # The finite-element engine: its fields on the nodes (tiny_fem_geo_case.yaml, UGRID only).
+flotsam_results_run(tiny_fem_geo "simulated +4.0 s")
 set(fem_run ${results_work}/tiny_fem_geo)
-add_test(NAME results.run_tiny_fem_geo_case
-         COMMAND ${CMAKE_COMMAND}
-                 "-DCOMMAND=$<TARGET_FILE:flotsam>;run;${CMAKE_CURRENT_SOURCE_DIR}/scripts/tiny_fem_geo_case.yaml;-o;${fem_run};--overwrite;-q"
-                 -DEXPECT_EXIT=0 "-DEXPECT_REGEX=simulated +4.0 s"
-                 -DWORKDIR=${results_work} -P ${PROJECT_SOURCE_DIR}/cmake/expect.cmake)
-set_tests_properties(results.run_tiny_fem_geo_case PROPERTIES LABELS "results"
-                     FIXTURES_SETUP tiny_fem_geo_results ENVIRONMENT "${test_environment}")
-add_test(NAME results.ugrid_structure_fem
-         COMMAND ${FLOTSAM_VTK_PYTHON} ${scripts}/check_ugrid.py ${fem_run}/tiny_fem_geo.nc
-                 --expect-times 3)
-add_test(NAME results.qgis_opens_the_fem_ugrid_mesh
-         COMMAND ${FLOTSAM_VTK_PYTHON} ${scripts}/check_ugrid_qgis.py ${fem_run}/tiny_fem_geo.nc
-                 --epsg 32633 --origin "2024-06-01 00:00:00")
-set_tests_properties(results.ugrid_structure_fem PROPERTIES LABELS "results"
-                     FIXTURES_REQUIRED tiny_fem_geo_results)
-set_tests_properties(results.qgis_opens_the_fem_ugrid_mesh PROPERTIES LABELS "qgis"
-                     FIXTURES_REQUIRED tiny_fem_geo_results)
+flotsam_results_test(ugrid_structure_fem tiny_fem_geo results
+                     ${scripts}/check_ugrid.py ${fem_run}/tiny_fem_geo.nc --expect-times 3)
+flotsam_results_test(qgis_opens_the_fem_ugrid_mesh tiny_fem_geo qgis
+                     ${scripts}/check_ugrid_qgis.py ${fem_run}/tiny_fem_geo.nc --epsg 32633
+                     --origin "2024-06-01 00:00:00")

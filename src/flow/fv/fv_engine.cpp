@@ -8,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "flow/bed.hpp"
-#include "flow/body_footprint.hpp"
 #include "flow/friction_map.hpp"
 #include "io/binary_archive.hpp"
 #include "io/vtu_writer.hpp"
@@ -216,32 +215,9 @@ void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix, bool o
   envelope_.restore(r, prefix, own_rating);
 }
 
-namespace {
-
-/// Every cell may carry debris, wet or dry (the walk's Cells, body_footprint.hpp).
-struct AllCells {
-  const CellMesh& c;
-  const Vec2& centroid(int i) const { return c.centroid[i]; }
-  double area(int i) const { return c.area[i]; }
-  const std::array<int, 3>& neighbours(int i) const { return c.neighbour[i]; }
-  bool counts(int /*i*/) const { return true; }
-};
-
-}  // namespace
-
-// The cells under each body, and the one holding its centre when its footprint holds no cell's
-// centroid (a body smaller than the cells).
+// The debris factor's cells (M-H2): those under the bodies, for the sub-steps to come.
 void FvEngine::mark_debris(const std::vector<BodyFootprint>& bodies) {
-  const CellMesh& c = solver_.cells();
-  debris_.assign(bodies.empty() ? 0 : c.cell_count, 0);
-  FootprintWalk walk(c.cell_count);
-  for (int k = 0; k < static_cast<int>(bodies.size()); ++k) {
-    int hint = -1;
-    const int start = field_->cell_of(bodies[k].centre, hint);
-    if (start < 0) continue;
-    debris_[start] = 1;
-    for (int i : walk.covered(bodies[k], start, k, AllCells{c})) debris_[i] = 1;
-  }
+  debris_ = field_->cells_under(bodies);
 }
 
 std::string FvEngine::summary() const {

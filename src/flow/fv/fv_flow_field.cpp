@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "flow/body_footprint.hpp"
@@ -91,7 +92,8 @@ FlowSample FvFlowField::sample(const Vec2& p, double t, int& hint) const {
 
 namespace {
 
-// The cells as the footprint walk sees them: the wet ones carry a share.
+// The cells as the footprint walk sees them: those deeper than `wet_depth` count (a reaction's
+// share; -infinity: every cell, wet or dry, as for the debris under a body).
 struct WetCells {
   const CellMesh& c;
   const std::vector<double>& h;
@@ -124,6 +126,23 @@ void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions)
     for (int i : covered) forces[i] += r.force * (c.area[i] / area);  // [N]
   }
   solver_.set_cell_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
+}
+
+// The cells under each body, and the one holding its centre when its footprint holds no cell's
+// centroid (a body smaller than the cells).
+std::vector<std::uint8_t> FvFlowField::cells_under(const std::vector<BodyFootprint>& bodies) const {
+  const CellMesh& c = solver_.cells();
+  const WetCells cells{c, solver_.state().h, -std::numeric_limits<double>::infinity()};
+  std::vector<std::uint8_t> under(bodies.empty() ? 0 : c.cell_count, 0);
+  FootprintWalk walk(c.cell_count);
+  for (int k = 0; k < static_cast<int>(bodies.size()); ++k) {
+    int hint = -1;
+    const int start = cell_of(bodies[k].centre, hint);
+    if (start < 0) continue;
+    under[start] = 1;
+    for (int i : walk.covered(bodies[k], start, k, cells)) under[i] = 1;
+  }
+  return under;
 }
 
 }  // namespace flotsam

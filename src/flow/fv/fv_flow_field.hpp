@@ -9,6 +9,7 @@
 // centroid lies in its footprint, in proportion to their area (the wet cell holding its centre
 // when none does), so the water receives exactly -F_x; a body over dry cells gives nothing to
 // the water (it rests on the bed).
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,8 @@ class FvFlowField final : public FlowField {
   double time_begin() const override { return t0_; }
   double time_end() const override { return t1_; }
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;
+  /// Per cell, 1 under one of `bodies` (wet or dry), else 0; empty when there are none.
+  std::vector<std::uint8_t> cells_under(const std::vector<BodyFootprint>& bodies) const;
 
   const std::vector<double>& node_bed() const { return node_bed_; }
   /// The cell holding p, or -1 outside the domain, walking from element `hint` (updated).
