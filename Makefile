@@ -18,7 +18,7 @@ PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-f
             libeigen3-dev libsuitesparse-dev libgmsh-dev libyaml-cpp-dev libcli11-dev \
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
             libmuparser-dev libgdal-dev libopenblas0-openmp time python3-gdal python3-numpy \
-            libopenmpi-dev openmpi-bin valgrind clang libclang-rt-14-dev libbox2d-dev \
+            libopenmpi-dev openmpi-bin valgrind clang lld libclang-rt-14-dev libbox2d-dev \
             libxxhash-dev libnetcdf-dev netcdf-bin python3-netcdf4 python3-xarray
 
 # QGIS (its Python bindings and MDAL provider, ~620 MB) only for `make test-qgis`.
@@ -27,7 +27,7 @@ QGIS_PACKAGES := python3-qgis
 CMAKE_FLAGS := -G Ninja -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
                $(if $(CI),-DFLOTSAM_WERROR=ON -DFLOTSAM_VALIDATE=ON,)
 
-.PHONY: all deps qgis-deps build test test-sanitize test-slow test-fuzz test-qgis demo bench format \
+.PHONY: all deps qgis-deps bench-deps build test test-sanitize test-slow test-fuzz test-qgis demo bench format \
         format-check clean
 
 all: build
@@ -64,8 +64,9 @@ test-slow: build
 	ctest --test-dir $(BUILD) -L slow --output-on-failure
 
 test-sanitize: deps
-	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DFLOTSAM_SANITIZE=ON $(CMAKE_FLAGS)
-	cmake --build $(SAN_BUILD) -j $(JOBS)
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+	    -DFLOTSAM_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target unit_tests
 	LSAN_OPTIONS=suppressions=$(CURDIR)/cmake/lsan.supp \
 	    ctest --test-dir $(SAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
@@ -97,7 +98,19 @@ demo: deps $(BUILD)/build.ninja
 # the flow engines' timed harnesses (about 5 minutes, most of it the FEM's hour of the paper's
 # channel), then timed runs of the examples, the two bridge cases also with the finite-volume
 # engine (results under build/bench_runs/, replaced each time). Figures go to docs/performance.md.
-bench: build
+# Debian's Gerris for the side-by-side of make bench (its expressions compile against its headers).
+BENCH_PACKAGES := gerris libgfs-dev
+
+bench-deps:
+	@missing=$$(for p in $(BENCH_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	    echo "installing:" $$missing; \
+	    $(SUDO) apt-get update -qq && \
+	    DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
+	fi
+
+bench: build bench-deps
 	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	@for b in $(BUILD)/bench/bench_*; do \
 	    case $$b in */bench_flow_channel|*/bench_fv_dam_break|*/bench_contacts_vs_box2d) continue;; esac; \
@@ -120,6 +133,16 @@ bench: build
 	@echo "== finite-volume engine: triangle-steps per second at 50k, 500k and 2M triangles"
 	OMP_WAIT_POLICY=PASSIVE $(BUILD)/bench/bench_fv_dam_break
 	@mkdir -p $(BUILD)/bench_runs
+	@echo "== the circular dam break on a Gmsh mesh (bench/circular_dam_break.yaml, 256,988 cells):"
+	@echo "   meshing (flotsam info) and the flow on 1 and 2 threads: cell updates per flow second"
+	/usr/bin/time -f "meshing: %e s" $(BUILD)/flotsam info bench/circular_dam_break.yaml | grep quality
+	@for t in 1 2 1 2; do OMP_NUM_THREADS=$$t $(BUILD)/flotsam run bench/circular_dam_break.yaml \
+	    -o $(BUILD)/bench_runs/circular --overwrite -q --fixed-threads | \
+	    sed -n 's/.* \([0-9.e+]*\) cell updates.*/'"$$t"' thread(s): \1 cell updates/p; s/^wall time *flow \([0-9.]*\) s.*/   flow \1 s/p'; done
+	@echo "== Gerris (Debian's gerris2D) on the same basin, 262,144 cells, 0.2 s, 1 core"
+	cd $(BUILD)/bench_runs && gerris2D $(CURDIR)/bench/circular_dam_break.gfs | grep "Timing summary"
+	@echo "== shared machines (docs/performance.md): bridge_piers beside a busy core, two runs at once"
+	bench/shared_machine.sh $(BUILD) 3
 	@for c in bridge_piers bridge_flood; do \
 	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/; /^  scheme: /d; /^  turbulence: /d' \
 	    examples/$$c.yaml \

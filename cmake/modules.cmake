@@ -50,6 +50,7 @@ function(flotsam_test_folder folder)
       set(kind "verification")
     else()
       set(kind "unit")
+      add_dependencies(unit_tests test_${target})
     endif()
     gtest_discover_tests(test_${target} PROPERTIES LABELS "${kind}"
                          ENVIRONMENT ${test_environment} DISCOVERY_TIMEOUT 60)

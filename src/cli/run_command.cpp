@@ -17,7 +17,8 @@ namespace flotsam::cli {
 void add_run_command(CLI::App& app) {
   struct Options {
     std::string case_file, output;
-    bool overwrite = false, quiet = false, restart = false, accept_output_changes = false;
+    bool overwrite = false, quiet = false, restart = false, accept_output_changes = false,
+         fixed_threads = false;
     double end = -1.0;
   };
   auto options = std::make_shared<Options>();
@@ -50,6 +51,10 @@ void add_run_command(CLI::App& app) {
                 "with --restart: continue although output.interval, output.probe_interval, "
                 "output.rasters or output.wet_depth changed (any other change is refused)")
       ->needs("--restart");
+  cmd->add_flag("--fixed-threads", options->fixed_threads,
+                "every step on all the threads (OMP_NUM_THREADS, else every core), even where "
+                "fewer would be faster on a shared machine (by default each step takes the "
+                "count measured fastest)");
   cmd->callback([options] {
     Case c = read_case(options->case_file);
     if (options->end > 0) c.time.end = options->end;
@@ -63,7 +68,8 @@ void add_run_command(CLI::App& app) {
                          .write_output = true,
                          .progress = !options->quiet,
                          .restart = options->restart,
-                         .accept_output_changes = options->accept_output_changes};
+                         .accept_output_changes = options->accept_output_changes,
+                         .adapt_threads = !options->fixed_threads};
     Simulation simulation(std::move(c), std::move(mesh), run);
     simulation.run();
     print_result(simulation.summary());

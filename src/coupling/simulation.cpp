@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <omp.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "bodies/outflow.hpp"
@@ -25,6 +28,7 @@ Simulation::Simulation(Case run_case, Mesh mesh, RunOptions options)
 
 void Simulation::initialize() {
   check_case_against_mesh(case_, mesh_.group_names);
+  if (options_.adapt_threads) threads_.emplace(omp_get_max_threads());
   bool output_changed = false;
   const std::filesystem::path checkpoint =
       options_.restart ? restart_checkpoint(output_changed) : "";
@@ -152,15 +156,26 @@ bool Simulation::done() const {
 // The simulation step: the stages in order, each timed (docs/architecture.md).
 void Simulation::step() {
   const double t0 = time_, t1 = std::min(time_ + case_.time.step, case_.time.end);
-  advance_flow(t1);
-  if (has_bodies_) {
-    advance_bodies(t0, t1);
-    hand_bodies_to_flow();
-  }
+  advance(t0, t1);
   time_ = t1;
   ++step_count_;
   check_diagnostics();
   write_output_if_due(false);
+}
+
+void Simulation::advance(double t0, double t1) {
+  const auto run_stages = [&] {
+    advance_flow(t1);
+    if (has_bodies_) {
+      advance_bodies(t0, t1);
+      hand_bodies_to_flow();
+    }
+  };
+  if (!threads_) return run_stages();
+  const ThreadCountScope scope(threads_->threads());
+  const auto start = std::chrono::steady_clock::now();
+  run_stages();
+  threads_->record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 void Simulation::advance_flow(double t1) {
@@ -431,6 +446,16 @@ std::string Simulation::summary() const {
     s += stage == Stage::contacts ? " (of which " + item + ")" : " " + item;
   }
   s += "\n";
+  if (threads_ && threads_->most() > 1) {
+    const long fewer = threads_->reduced_steps(), all = threads_->steps();
+    s += fmt::format("threads          {}", threads_->most());
+    s += fewer == 0 ? "\n"
+                    : fmt::format(", fewer in {} of {} steps ({:.0f} %: {})\n", fewer, all,
+                                  100.0 * static_cast<double>(fewer) / static_cast<double>(all),
+                                  threads_->threads() < threads_->most()
+                                      ? "the machine is shared, fewer were faster"
+                                      : "trials, or the machine was shared for a while");
+  }
   if (output_) s += fmt::format("results in       {}\n", output_->directory().string());
   return s;
 }

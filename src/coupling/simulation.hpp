@@ -19,6 +19,7 @@
 #include "bodies/release.hpp"
 #include "contact/boundary_segments.hpp"
 #include "contact/contact_world.hpp"
+#include "core/thread_governor.hpp"
 #include "coupling/backwater.hpp"
 #include "coupling/jam_statistics.hpp"
 #include "coupling/mesh_setup.hpp"
@@ -52,6 +53,10 @@ struct RunOptions {
   /// writes no checkpoint at its start, only at its later outputs (a restart still continues it
   /// from its last one). Fewer files written and replaced (docs/performance.md, "Ensembles").
   bool rerun_whole = false;
+  /// Each step on the thread count that takes the least wall time, from all of
+  /// omp_get_max_threads() down (core/thread_governor.hpp): `flotsam run` and ensemble members;
+  /// false: every step on all of them.
+  bool adapt_threads = false;
 };
 
 class Simulation {
@@ -91,6 +96,8 @@ class Simulation {
 
  private:
   std::string discharge_summary() const;
+  /// The step's computing stages (flow, bodies, reaction) on the governor's thread count.
+  void advance(double t0, double t1);
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void hand_bodies_to_flow();
@@ -145,6 +152,7 @@ class Simulation {
   double next_output_ = 0.0;  // [s]
   IntegrationStats integration_totals_;
   StageTimer timer_;
+  std::optional<ThreadGovernor> threads_;  // RunOptions::adapt_threads
 };
 
 }  // namespace flotsam

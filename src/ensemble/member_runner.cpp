@@ -75,7 +75,8 @@ MemberResult run_member(const MemberRun& run, const MemberSetup& setup) {
                              .progress = false,
                              .shared_flow = setup.shared_flow,
                              .mesh_setup = setup.mesh_setup,
-                             .rerun_whole = true};
+                             .rerun_whole = true,
+                             .adapt_threads = true};
     Simulation simulation(std::move(member_case), *setup.mesh, options);
     BlockingMonitor monitor(*setup.geometry, setup.criterion);
     simulate(simulation, monitor, setup.criterion.sample_interval, result);

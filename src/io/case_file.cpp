@@ -395,6 +395,7 @@ Case parse_case(const std::string& text, const std::string& file_name) {
     c.bridges = read_bridges(*bridges, case_folder, c.mesh, geodata);
   c.flow = read_flow(root.get("flow", "the water, its friction and its boundaries").map(),
                      case_folder, geodata);
+  if (c.flow.engine == FlowEngineKind::fv) c.mesh.element_order = 1;  // straight cells
   for (const BridgeConfig& bridge : c.bridges)
     if (bridge.deck && c.flow.engine != FlowEngineKind::fv)
       throw_input_error(

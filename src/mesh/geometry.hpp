@@ -104,6 +104,9 @@ struct MeshSource {
   BendGeometry bend;
   PolygonGeometry polygon;
   RegionGeometry region;
+  // Generated meshes: Gmsh's six-node triangles (2) or three-node ones (1, with straight mid
+  // nodes added: `flow.engine: fv`, whose cells are straight triangles).
+  int element_order = 2;
 };
 
 }  // namespace flotsam

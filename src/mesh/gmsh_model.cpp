@@ -91,13 +91,13 @@ Vec2 local_origin(const std::vector<Vec2>& points) {
 /// Steps 2-4 after the boundary is built: surface, groups, mesh, write, extract.
 RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
                            const BoundaryGroups& groups, const std::string& msh_path,
-                           const MshFormat& format, const Vec2& origin) {
+                           const MshFormat& format, int order, const Vec2& origin) {
   try {
     const int surface = geo::addPlaneSurface(loops);
     geo::synchronize();
     groups.create(surface);
     gmsh::model::mesh::generate(2);
-    gmsh::model::mesh::setOrder(2);
+    if (order == 2) gmsh::model::mesh::setOrder(2);
     if (origin != Vec2::Zero()) {  // back to the caller's coordinates
       std::vector<std::size_t> tags;
       std::vector<double> xyz, uvw;

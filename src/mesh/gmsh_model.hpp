@@ -1,7 +1,8 @@
 #pragma once
 // The steps every mesh generator shares (mesh_generator.cpp, region_mesh.cpp), on Gmsh's
 // built-in (geo) kernel inside a GmshSession: points, circles, named boundary groups, options,
-// the size field near curves, then mesh -> order 2 -> (write) -> RawMesh.
+// the size field near curves, then mesh -> order 2 (or 1: three-node triangles) -> (write) ->
+// RawMesh.
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,7 +54,7 @@ Vec2 local_origin(const std::vector<Vec2>& points);
 /// (the model was built around it: local_origin), write, extract.
 RawMesh mesh_current_model(const std::string& source, const std::vector<int>& loops,
                            const BoundaryGroups& groups, const std::string& msh_path,
-                           const MshFormat& format, const Vec2& origin = Vec2::Zero());
+                           const MshFormat& format, int order, const Vec2& origin = Vec2::Zero());
 
 void require_positive(const std::string& source, const char* key, double value);
 

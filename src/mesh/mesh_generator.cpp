@@ -1,4 +1,4 @@
-// Geometry -> Gmsh built-in (geo) model -> order-2 mesh -> RawMesh.
+// Geometry -> Gmsh built-in (geo) model -> order-2 (or order-1) mesh -> RawMesh.
 //
 // Every generator:
 //   1. validates the geometry (InputError naming the pier, point or side);
@@ -8,8 +8,9 @@
 //   3. sets the size: Mesh.MeshSizeMax everywhere, and for the channel a Threshold field of the
 //      Distance to the piers, growing from pier_mesh_size on the circles to mesh_size at
 //      refine_distance;
-//   4. meshes in 2D (Frontal-Delaunay), raises to order 2 (mid nodes on the curves), writes the
-//      .msh if asked, and hands the model to raw_mesh_from_gmsh_model.
+//   4. meshes in 2D (Frontal-Delaunay), raises to order 2 (mid nodes on the curves) unless
+//      three-node triangles were asked for, writes the .msh if asked, and hands the model to
+//      raw_mesh_from_gmsh_model.
 #include "mesh/mesh_generator.hpp"
 
 #include <gmsh.h>
@@ -89,7 +90,7 @@ void check_polygon(const PolygonGeometry& polygon, const std::string& source) {
 }  // namespace
 
 RawMesh generate_channel_mesh(const ChannelGeometry& channel, const std::string& msh_path,
-                              const MshFormat& format) {
+                              const MshFormat& format, int order) {
   const std::string source = "generated channel";
   check_channel(channel, source);
   const double L = channel.length, W = channel.width;  // [m]
@@ -116,11 +117,11 @@ RawMesh generate_channel_mesh(const ChannelGeometry& channel, const std::string&
     geo::synchronize();
     add_pier_size_field(channel, pier_curves);
   }
-  return mesh_current_model(source, loops, groups, msh_path, format);
+  return mesh_current_model(source, loops, groups, msh_path, format, order);
 }
 
 RawMesh generate_bend_mesh(const BendGeometry& bend, const std::string& msh_path,
-                           const MshFormat& format) {
+                           const MshFormat& format, int order) {
   const std::string source = "generated bend";
   require_positive(source, "width", bend.width);
   require_positive(source, "inner_radius", bend.inner_radius);
@@ -154,11 +155,11 @@ RawMesh generate_bend_mesh(const BendGeometry& bend, const std::string& msh_path
   for (int curve : {outer_in, outer_arc_1, outer_arc_2, outer_out}) groups.add("bank_outer", curve);
   const std::vector<int> loop = {outer_in,  outer_arc_1, outer_arc_2, outer_out, outflow,
                                  inner_out, inner_arc_1, inner_arc_2, inner_in,  inflow};
-  return mesh_current_model(source, {geo::addCurveLoop(loop)}, groups, msh_path, format);
+  return mesh_current_model(source, {geo::addCurveLoop(loop)}, groups, msh_path, format, order);
 }
 
 RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string& msh_path,
-                              const MshFormat& format) {
+                              const MshFormat& format, int order) {
   const std::string source = "generated polygon";
   check_polygon(polygon, source);
   GmshSession session;
@@ -171,7 +172,8 @@ RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string&
     sides.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
     groups.add(polygon.groups[i], sides.back());
   }
-  return mesh_current_model(source, {geo::addCurveLoop(sides)}, groups, msh_path, format, origin);
+  return mesh_current_model(source, {geo::addCurveLoop(sides)}, groups, msh_path, format, order,
+                            origin);
 }
 
 Mesh generate_mesh(const MeshSource& source, const std::string& msh_path, const MshFormat& format) {
@@ -191,13 +193,16 @@ Mesh generate_mesh(const MeshSource& source, const std::string& msh_path, const 
       return mesh;
     }
     case MeshSource::Kind::channel:
-      return build_mesh(generate_channel_mesh(source.channel, msh_path, format));
+      return build_mesh(
+          generate_channel_mesh(source.channel, msh_path, format, source.element_order));
     case MeshSource::Kind::bend:
-      return build_mesh(generate_bend_mesh(source.bend, msh_path, format));
+      return build_mesh(generate_bend_mesh(source.bend, msh_path, format, source.element_order));
     case MeshSource::Kind::polygon:
-      return build_mesh(generate_polygon_mesh(source.polygon, msh_path, format));
+      return build_mesh(
+          generate_polygon_mesh(source.polygon, msh_path, format, source.element_order));
     case MeshSource::Kind::region:
-      return build_mesh(generate_region_mesh(source.region, msh_path, format));
+      return build_mesh(
+          generate_region_mesh(source.region, msh_path, format, source.element_order));
   }
   throw_input_error("mesh source: unknown kind {}", static_cast<int>(source.kind));
 }

@@ -24,14 +24,16 @@ struct MshFormat {
 Mesh generate_mesh(const MeshSource& source, const std::string& msh_path = "",
                    const MshFormat& format = {});
 
-/// The generators behind generate_mesh, returning the lists build_mesh takes.
+/// The generators behind generate_mesh, returning the lists build_mesh takes: Gmsh's six-node
+/// triangles (`order` 2, mid nodes on curved boundaries), or its three-node ones (`order` 1,
+/// build_mesh adds straight mid nodes: the finite-volume engine's cells, meshed faster).
 RawMesh generate_channel_mesh(const ChannelGeometry& channel, const std::string& msh_path = "",
-                              const MshFormat& format = {});
+                              const MshFormat& format = {}, int order = 2);
 RawMesh generate_bend_mesh(const BendGeometry& bend, const std::string& msh_path = "",
-                           const MshFormat& format = {});
+                           const MshFormat& format = {}, int order = 2);
 RawMesh generate_polygon_mesh(const PolygonGeometry& polygon, const std::string& msh_path = "",
-                              const MshFormat& format = {});
+                              const MshFormat& format = {}, int order = 2);
 RawMesh generate_region_mesh(const RegionGeometry& region, const std::string& msh_path = "",
-                             const MshFormat& format = {});
+                             const MshFormat& format = {}, int order = 2);
 
 }  // namespace flotsam

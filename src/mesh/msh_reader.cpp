@@ -9,8 +9,9 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cstddef>
-#include <map>
+#include <numeric>
 #include <unordered_map>
 #include <vector>
 
@@ -31,8 +32,48 @@ struct GmshTriangles {
   std::vector<long> tags;
 };
 
+// Gmsh's nodes in tag order, found by tag (a binary search: tags need not be contiguous).
+struct NodeTable {
+  std::vector<std::size_t> tags;  // ascending
+  std::vector<Vec2> xy;           // [m]
+  std::vector<char> use;          // by position: 0 unused, 1 mid node, 2 vertex
+
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::size_t find(std::size_t tag) const {
+    const auto it = std::lower_bound(tags.begin(), tags.end(), tag);
+    return it != tags.end() && *it == tag ? static_cast<std::size_t>(it - tags.begin()) : none;
+  }
+  std::size_t at(std::size_t tag, const std::string& source) const {
+    const std::size_t k = find(tag);
+    if (k == none)
+      throw_input_error("{}: an element refers to node {}, which the file does not define", source,
+                        tag);
+    return k;
+  }
+};
+
+NodeTable read_nodes() {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+  std::vector<std::size_t> order(tags.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+  NodeTable table;
+  table.tags.reserve(tags.size());
+  table.xy.reserve(tags.size());
+  for (std::size_t n : order) {
+    if (!table.tags.empty() && table.tags.back() == tags[n]) continue;  // listed by two entities
+    table.tags.push_back(tags[n]);
+    table.xy.emplace_back(xyz[3 * n], xyz[3 * n + 1]);
+  }
+  table.use.assign(table.tags.size(), 0);
+  return table;
+}
+
 // The triangles of one surface; all reversed when all run clockwise.
-void append_surface_triangles(int surface, const std::map<std::size_t, Vec2>& coordinates,
+void append_surface_triangles(int surface, const NodeTable& nodes, const std::string& source,
                               GmshTriangles& out) {
   GmshTriangles mine;
   for (int type : {gmsh_triangle3, gmsh_triangle6}) {
@@ -47,8 +88,8 @@ void append_surface_triangles(int surface, const std::map<std::size_t, Vec2>& co
   }
   bool all_clockwise = !mine.nodes.empty();
   for (const auto& tri : mine.nodes) {
-    const Vec2 &a = coordinates.at(tri[0]), &b = coordinates.at(tri[1]),
-               &c = coordinates.at(tri[2]);
+    const Vec2 &a = nodes.xy[nodes.at(tri[0], source)], &b = nodes.xy[nodes.at(tri[1], source)],
+               &c = nodes.xy[nodes.at(tri[2], source)];
     if (cross(b - a, c - a) >= 0) {
       all_clockwise = false;
       break;
@@ -103,11 +144,10 @@ struct PendingLine {
   long tag;
 };
 
-// 3. The lines of every curve whose end nodes are triangle vertices (`used` maps a node tag to
-// whether it is a vertex), with their group. A 3-node line keeps its mid node even if no
-// triangle uses it (3-node triangles with 3-node boundary lines: the mid node is on the curve),
-// so it is added to `used`.
-std::vector<PendingLine> lines_on_triangles(std::map<std::size_t, bool>& used) {
+// 3. The lines of every curve whose end nodes are triangle vertices (NodeTable::use), with
+// their group. A 3-node line keeps its mid node even if no triangle uses it (3-node triangles
+// with 3-node boundary lines: the mid node is on the curve), so it is marked used.
+std::vector<PendingLine> lines_on_triangles(NodeTable& nodes, const std::string& source) {
   std::vector<PendingLine> lines;
   const auto group_of_curve = curve_group_names();
   gmsh::vectorpair curves;
@@ -124,9 +164,13 @@ std::vector<PendingLine> lines_on_triangles(std::map<std::size_t, bool>& used) {
                           node_tags.begin() + static_cast<std::ptrdiff_t>((e + 1) * per)},
                          group,
                          static_cast<long>(element_tags[e])};
-        const auto a = used.find(line.nodes[0]), b = used.find(line.nodes[1]);
-        if (a == used.end() || b == used.end() || !a->second || !b->second) continue;
-        if (per == 3) used.emplace(line.nodes[2], false);
+        const std::size_t a = nodes.find(line.nodes[0]), b = nodes.find(line.nodes[1]);
+        if (a == NodeTable::none || b == NodeTable::none || nodes.use[a] != 2 || nodes.use[b] != 2)
+          continue;
+        if (per == 3) {
+          char& mid = nodes.use[nodes.at(line.nodes[2], source)];
+          mid = std::max(mid, char{1});
+        }
         lines.push_back(std::move(line));
       }
     }
@@ -136,50 +180,45 @@ std::vector<PendingLine> lines_on_triangles(std::map<std::size_t, bool>& used) {
 
 RawMesh extract_raw_mesh(const std::string& source) {
   check_surface_element_types(source);
-  std::map<std::size_t, Vec2> coordinates;  // by Gmsh node tag, in tag order
-  {
-    std::vector<std::size_t> tags;
-    std::vector<double> xyz, parametric;
-    gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
-    for (std::size_t n = 0; n < tags.size(); ++n)
-      coordinates[tags[n]] = Vec2(xyz[3 * n], xyz[3 * n + 1]);
-  }
+  NodeTable nodes = read_nodes();
 
   // 1. Triangles, surface by surface.
   GmshTriangles triangles;
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
   for (const auto& surface : surfaces)
-    append_surface_triangles(surface.second, coordinates, triangles);
+    append_surface_triangles(surface.second, nodes, source, triangles);
   if (triangles.nodes.empty())
     throw_input_error("{}: the mesh has no triangles (Gmsh element type 2 or 9)", source);
 
   // 2. The nodes the triangles and lines use, in tag order.
   RawMesh raw;
   raw.source = source;
-  std::unordered_map<std::size_t, int> index_of_tag;
-  std::map<std::size_t, bool> used;
-  for (const auto& tri : triangles.nodes)
-    for (std::size_t k = 0; k < tri.size(); ++k) used[tri[k]] = used[tri[k]] || k < 3;
-  const std::vector<PendingLine> lines = lines_on_triangles(used);
-  for (const auto& [tag, is_vertex] : used) {
-    const auto point = coordinates.find(tag);
-    if (point == coordinates.end())
-      throw_input_error("{}: an element refers to node {}, which the file does not define", source,
-                        tag);
-    index_of_tag[tag] = static_cast<int>(raw.nodes.size());
-    raw.nodes.push_back(point->second);
-    raw.node_tags.push_back(static_cast<long>(tag));
+  for (auto& tri : triangles.nodes)
+    for (std::size_t k = 0; k < tri.size(); ++k) {
+      const std::size_t n = nodes.at(tri[k], source);
+      nodes.use[n] = std::max(nodes.use[n], k < 3 ? char{2} : char{1});
+      tri[k] = n;  // from here on, positions in the table
+    }
+  const std::vector<PendingLine> lines = lines_on_triangles(nodes, source);
+  std::vector<int> index(nodes.tags.size(), -1);  // by position: index in raw.nodes
+  for (std::size_t n = 0; n < nodes.tags.size(); ++n) {
+    if (!nodes.use[n]) continue;
+    index[n] = static_cast<int>(raw.nodes.size());
+    raw.nodes.push_back(nodes.xy[n]);
+    raw.node_tags.push_back(static_cast<long>(nodes.tags[n]));
   }
+  raw.triangles.reserve(triangles.nodes.size());
   for (std::size_t t = 0; t < triangles.nodes.size(); ++t) {
     std::vector<int> tri;
-    for (std::size_t node : triangles.nodes[t]) tri.push_back(index_of_tag.at(node));
+    tri.reserve(triangles.nodes[t].size());
+    for (std::size_t n : triangles.nodes[t]) tri.push_back(index[n]);
     raw.triangles.push_back(std::move(tri));
-    raw.triangle_tags.push_back(triangles.tags[t]);
   }
+  raw.triangle_tags = std::move(triangles.tags);
   for (const auto& line : lines) {
     RawMesh::Line raw_line;
-    for (std::size_t node : line.nodes) raw_line.nodes.push_back(index_of_tag.at(node));
+    for (std::size_t tag : line.nodes) raw_line.nodes.push_back(index[nodes.at(tag, source)]);
     raw_line.group = line.group;
     raw_line.tag = line.tag;
     raw.lines.push_back(std::move(raw_line));

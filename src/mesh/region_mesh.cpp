@@ -157,7 +157,7 @@ int add_loop(const std::vector<Vec2>& ring, const Vec2& origin, const std::strin
 }  // namespace
 
 RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_path,
-                             const MshFormat& format) {
+                             const MshFormat& format, int order) {
   for (auto [key, value] :
        {std::pair{"mesh_size", g.mesh_size}, std::pair{"building_mesh_size", g.building_mesh_size},
         std::pair{"pier_mesh_size", g.pier_mesh_size}})
@@ -251,7 +251,7 @@ RawMesh generate_region_mesh(const RegionGeometry& g, const std::string& msh_pat
     gmsh::model::mesh::setSizeCallback([&g, origin](int, int, double x, double y, double) {
       return std::min(g.size_at(origin + Vec2(x, y)), g.mesh_size);
     });
-  return mesh_current_model(source, loops, groups, msh_path, format, origin);
+  return mesh_current_model(source, loops, groups, msh_path, format, order, origin);
 }
 
 }  // namespace flotsam

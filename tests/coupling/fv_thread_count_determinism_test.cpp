@@ -79,5 +79,33 @@ TEST(FvThreadCountDeterminism, OneAndTwoThreadsGiveBitIdenticalRuns) {
   }
 }
 
+// What `flotsam run` does on a shared machine (core/thread_governor.hpp): the thread count
+// changes between steps. Every step on a count of its own (1, 2, 1, ...) gives the run of one
+// count, bit for bit.
+TEST(FvThreadCountDeterminism, ThreadCountChangingEveryStepGivesTheSameRun) {
+  const RunResult two = run_on_threads(2);
+  const int saved = omp_get_max_threads();
+  const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 40, .nx = 40, .ny = 8});
+  Simulation s(
+      flood_case(), mesh,
+      {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
+  s.initialize();
+  for (int k = 0; !s.done(); ++k) {
+    omp_set_num_threads(k % 2 == 0 ? 1 : 2);
+    s.step();
+  }
+  omp_set_num_threads(saved);
+  const FiniteVolumeSolver& flow = dynamic_cast<const FvEngine&>(s.flow()).solver();
+  ASSERT_GE(s.step_count(), 12);
+  EXPECT_EQ(flow.state().h, two.water.h);
+  EXPECT_EQ(flow.state().hu, two.water.hu);
+  EXPECT_EQ(flow.state().hv, two.water.hv);
+  ASSERT_EQ(s.bodies().position.size(), two.positions.size());
+  for (std::size_t i = 0; i < two.positions.size(); ++i) {
+    EXPECT_EQ(s.bodies().position[i], two.positions[i]) << "body " << i;
+    EXPECT_EQ(s.bodies().angle[i], two.angles[i]) << "body " << i;
+  }
+}
+
 }  // namespace
 }  // namespace flotsam

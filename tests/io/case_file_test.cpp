@@ -424,6 +424,11 @@ TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
   EXPECT_EQ(d.flow.fv.courant, 0.9);
   EXPECT_EQ(d.flow.fv.cells, FvCells::elements);
   EXPECT_EQ(d.flow.dry_depth_or_default(), 1e-5);  // the finite volumes' (docs/model.md (M-15))
+  // A generated mesh of three-node triangles for the finite volumes, six-node for the FEM.
+  EXPECT_EQ(d.mesh.element_order, 1);
+  EXPECT_EQ(
+      parse_case(edited("  initial:", "  engine: fem\n  initial:"), "case.yaml").mesh.element_order,
+      2);
   EXPECT_EQ(
       parse_case(edited("  initial:", "  engine: fv\n  dry_depth: 0.002\n  initial:"), "case.yaml")
           .flow.dry_depth_or_default(),

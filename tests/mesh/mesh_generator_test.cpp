@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -91,6 +92,33 @@ TEST(MeshGenerator, PierMidNodesLieOnTheCircles) {
     EXPECT_LE(largest_radial_error(mesh, fmt::format("pier_{}", i + 1), pier.centre, pier.radius),
               1e-9);
   }
+}
+
+TEST(MeshGenerator, ThreeNodeMeshHasTheSameVerticesAndTrianglesWithStraightMidNodes) {
+  // element_order 1 (engine: fv): Gmsh's triangles without its raising to order 2; the same
+  // vertices and triangles in the same numbering, no curved element, every mid node halfway.
+  MeshSource source = test::two_pier_channel();
+  const Mesh six = generate_mesh(source);
+  source.element_order = 1;
+  const Mesh three = generate_mesh(source);
+  ASSERT_EQ(three.vertex_count, six.vertex_count);
+  ASSERT_EQ(three.element_count(), six.element_count());
+  for (int n = 0; n < six.vertex_count; ++n) EXPECT_EQ(three.nodes[n], six.nodes[n]) << n;
+  int curved_six = 0;
+  double largest_offset = 0.0;  // [m] of a mid node from its edge's midpoint
+  for (int e = 0; e < three.element_count(); ++e) {
+    const auto& el = three.elements[e];
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(el[k], six.elements[e][k]);
+      const Vec2 halfway = 0.5 * (three.nodes[el[k]] + three.nodes[el[(k + 1) % 3]]);
+      largest_offset = std::max(largest_offset, (three.nodes[el[3 + k]] - halfway).norm());
+    }
+    EXPECT_FALSE(three.is_curved(e));
+    curved_six += six.is_curved(e);
+  }
+  EXPECT_GT(curved_six, 0);  // the six-node mesh follows the piers' circles
+  EXPECT_LE(largest_offset, 1e-12);
+  EXPECT_EQ(three.group_names, six.group_names);
 }
 
 TEST(MeshGenerator, ChannelLengthsAndAreaMatchTheGeometry) {

@@ -3,6 +3,7 @@
 // exactly when the scan finds none: on a mesh with square, polygonal and U-shaped holes, and on
 // curved P2 elements.
 #include "mesh/point_locator.hpp"
+#include "../support/sanitized.hpp"
 #include "../support/two_pier_channel.hpp"
 
 #include <gtest/gtest.h>
@@ -64,7 +65,8 @@ TEST(PointLocator, WalkAgreesWithBruteForceOnAMeshWithHoles) {
   // Random points over and around the domain (holes, outside): cold starts, random hints (most
   // of them far: the grid takes over), and hints from a point up to 1.5 m away, so that walks
   // meet the holes' walls.
-  for (int i = 0; i < 60000; ++i, ++queries) {
+  const int random_points = test::repetitions(60000), all_points = test::repetitions(100000);
+  for (int i = 0; i < random_points; ++i, ++queries) {
     const Vec2 p(x(random), y(random));
     int hint = -1;
     if (i % 3 == 1) hint = element(random);
@@ -73,7 +75,7 @@ TEST(PointLocator, WalkAgreesWithBruteForceOnAMeshWithHoles) {
     comparison.check(p, hint, true);
   }
   // Points exactly on vertices, on edge midpoints and on edges (any containing element is right).
-  while (queries < 100000) {
+  while (queries < all_points) {
     const int e = element(random), k = queries % 3;
     const auto& el = mesh.elements[e];
     const Vec2 &a = mesh.nodes[el[k]], &b = mesh.nodes[el[(k + 1) % 3]];
@@ -140,7 +142,7 @@ TEST(PointLocator, WalkTakesFewStepsForAPointMovingAFractionOfAnElement) {
   Vec2 p(1.0, 1.0), direction(1.0, 0.0);
   Location location = locator.locate(p);
   long steps = 0;
-  const int queries = 20000;
+  const int queries = test::repetitions(20000);
   for (int i = 0; i < queries; ++i) {
     Vec2 next = p + 0.3 * h * direction;
     while (!locator.locate_brute_force(next).inside) {
@@ -239,7 +241,7 @@ TEST(PointLocator, CachedStartWalkFindsTheElementOfAFreshSearch) {
     cached[k] = locator.locate({px[k], py[k]}).element;
   }
   int generic = 0, shared = 0;
-  for (int step = 0; step < 2000; ++step) {
+  for (int step = 0; step < test::repetitions(2000); ++step) {
     for (int k = 0; k < bodies; ++k) {  // a move of up to half a cell, or onto a vertex
       Vec2 next;
       do {
@@ -269,8 +271,8 @@ TEST(PointLocator, CachedStartWalkFindsTheElementOfAFreshSearch) {
       cached[k] = walked[k].element;
     }
   }
-  EXPECT_GT(generic, 10000);
-  EXPECT_GT(shared, 200);  // on grid vertices
+  EXPECT_GT(generic, test::repetitions(10000));
+  EXPECT_GT(shared, test::repetitions(200));  // on grid vertices
 }
 
 TEST(PointLocator, CurvedElementsUseTheirSubTrianglesAndInvertTheP2Map) {
@@ -293,7 +295,8 @@ TEST(PointLocator, CurvedElementsUseTheirSubTrianglesAndInvertTheP2Map) {
   Comparison comparison{locator};
   std::mt19937 random(99);
   std::uniform_real_distribution<double> x(-0.05, 1.05), y(-0.1, 0.4), unit(0.0, 1.0);
-  for (int i = 0; i < 20000; ++i) comparison.check({x(random), y(random)}, i % 2 - 1, true);
+  for (int i = 0; i < test::repetitions(20000); ++i)
+    comparison.check({x(random), y(random)}, i % 2 - 1, true);
   EXPECT_EQ(comparison.failures, 0);
 
   // Newton recovers the reference coordinates of x(r, s) in every curved element.
@@ -328,9 +331,10 @@ TEST(PointLocator, ChannelWithTwoCircularPiersFromTheMeshGenerator) {
   std::mt19937 random(31);
   std::uniform_real_distribution<double> x(-5.0, 205.0), y(-5.0, 65.0),
       angle(0.0, 2 * std::numbers::pi), gap(0.0, 1.0);
-  for (int i = 0; i < 20000; ++i) comparison.check({x(random), y(random)}, -1, true);
+  for (int i = 0; i < test::repetitions(20000); ++i)
+    comparison.check({x(random), y(random)}, -1, true);
   // Around the piers, from hints nearby: just outside the circle inside, well inside outside.
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < test::repetitions(4000); ++i) {
     const Pier& pier = piers[i % 2];
     const double a = angle(random);
     const Vec2 direction(std::cos(a), std::sin(a));

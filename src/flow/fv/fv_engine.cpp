@@ -227,11 +227,14 @@ std::string FvEngine::summary() const {
                                   ? fmt::format("Courant step smallest {:.3g} s, mean {:.3g} s",
                                                 s.smallest, s.count > 0 ? s.total / s.count : 0.0)
                                   : std::string("no Courant limit (the water was dry and still)");
+  // The work done, whatever the machine: one cell advanced one sub-step (a retried one too).
+  const double updates =
+      static_cast<double>(solver_.cells().cell_count) * static_cast<double>(s.count + s.rejected);
   return fmt::format(
-             "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {}; wet "
-             "(deeper than {:g} m) {:.1f} % of the area\n",
-             solver_.cells().cell_count, s.count, s.rejected, courant, case_.output.wet_depth,
-             100.0 * solver_.wet_fraction()) +
+             "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {:.4g} cell "
+             "updates, {}; wet (deeper than {:g} m) {:.1f} % of the area\n",
+             solver_.cells().cell_count, s.count, s.rejected, updates, courant,
+             case_.output.wet_depth, 100.0 * solver_.wet_fraction()) +
          hazard_summary();
 }
 
