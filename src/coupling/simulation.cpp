@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "bodies/outflow.hpp"
 #include "bridges/deck_contact.hpp"
@@ -153,28 +154,30 @@ bool Simulation::done() const {
   return time_ >= case_.time.end - 1e-9 * case_.time.step;
 }
 
-// The simulation step: the stages in order, each timed (docs/architecture.md).
+// The simulation step: the stages in order, each timed (docs/architecture.md); the computing
+// ones on the thread count the governor chose.
 void Simulation::step() {
   const double t0 = time_, t1 = std::min(time_ + case_.time.step, case_.time.end);
-  advance(t0, t1);
+  on_chosen_threads([&] {
+    advance_flow(t1);
+    if (has_bodies_) {
+      advance_bodies(t0, t1);
+      hand_bodies_to_flow();
+    }
+  });
   time_ = t1;
   ++step_count_;
   check_diagnostics();
   write_output_if_due(false);
 }
 
-void Simulation::advance(double t0, double t1) {
-  const auto run_stages = [&] {
-    advance_flow(t1);
-    if (has_bodies_) {
-      advance_bodies(t0, t1);
-      hand_bodies_to_flow();
-    }
-  };
-  if (!threads_) return run_stages();
+// `stages` on the governor's thread count, their wall time told to it (RunOptions::adapt_threads);
+// else on the threads as they are.
+void Simulation::on_chosen_threads(const std::function<void()>& stages) {
+  if (!threads_) return stages();
   const ThreadCountScope scope(threads_->threads());
   const auto start = std::chrono::steady_clock::now();
-  run_stages();
+  stages();
   threads_->record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 

@@ -9,6 +9,7 @@
 // in it; `one-way` advances the flow and the bodies feel it; `two-way` also gives the flow the
 // bodies' reaction. A case without bodies is a flow-only run.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -96,8 +97,7 @@ class Simulation {
 
  private:
   std::string discharge_summary() const;
-  /// The step's computing stages (flow, bodies, reaction) on the governor's thread count.
-  void advance(double t0, double t1);
+  void on_chosen_threads(const std::function<void()>& stages);
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void hand_bodies_to_flow();
