@@ -129,6 +129,10 @@ bench: build bench-deps
 	@echo "== finite-volume engine: triangle-steps per second at 50k, 500k and 2M triangles"
 	OMP_WAIT_POLICY=PASSIVE $(BUILD)/bench/bench_fv_dam_break
 	@mkdir -p $(BUILD)/bench_runs
+	@for c in bridge_piers bridge_flood; do \
+	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/; /^  scheme: /d; /^  turbulence: /d' \
+	    examples/$$c.yaml \
+	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
 	@echo "== the circular dam break on a Gmsh mesh (bench/circular_dam_break.yaml, 256,988 cells):"
 	@echo "   meshing (flotsam info) and the flow on 1 and 2 threads: cell updates per flow second"
 	/usr/bin/time -f "meshing: %e s" $(BUILD)/flotsam info bench/circular_dam_break.yaml | grep quality
@@ -139,10 +143,6 @@ bench: build bench-deps
 	cd $(BUILD)/bench_runs && gerris2D $(CURDIR)/bench/circular_dam_break.gfs | grep "Timing summary"
 	@echo "== shared machines (docs/performance.md): bridge_piers beside a busy core, two runs at once"
 	bench/shared_machine.sh $(BUILD) 3
-	@for c in bridge_piers bridge_flood; do \
-	    sed 's/^flow:/flow:\n  engine: fv/; s/^name: .*/name: '$$c'_fv/; /^  scheme: /d; /^  turbulence: /d' \
-	    examples/$$c.yaml \
-	    > $(BUILD)/bench_runs/$${c}_fv.yaml; done
 	@echo "== ensemble examples/bridge_blocking.yaml on 1 job (12 members per length) and on 2 jobs"
 	@echo "   (all 96): members per minute, the shared flow, set-up and output per member"
 	@echo "   (docs/performance.md, Ensembles). Into new folders: the last results are moved"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs on a shared machine (docs/performance.md "Shared machines"): examples/bridge_piers.yaml,
-# 600 s, with the FEM engine and with `engine: fv`,
+# 600 s, with the FEM engine and with `engine: fv` (BUILD_DIR/bench_runs/bridge_piers_fv.yaml,
+# written by make bench),
 #   * beside a busy core (`yes`, started here): 1 thread (--fixed-threads) against 2 threads as
 #     `flotsam run` chooses, alternated ROUNDS times; and 2 threads fixed once;
 #   * alone, then two runs started together: the time of each, as chosen and fixed.
@@ -10,14 +11,13 @@ build=$1
 rounds=${2:-3}
 work=$build/bench_runs/shared
 mkdir -p "$work"
-sed 's/^  end: .*/  end: 600/' examples/bridge_piers.yaml > "$work/fem.yaml"
-sed 's/^flow:/flow:\n  engine: fv/; /^  scheme: /d; /^  turbulence: /d' "$work/fem.yaml" > "$work/fv.yaml"
+declare -A case_file=([fem]=examples/bridge_piers.yaml [fv]=$build/bench_runs/bridge_piers_fv.yaml)
 run() {  # label, threads, engine, output, flotsam options...
   local label=$1 threads=$2 engine=$3 out=$4
   shift 4
   OMP_NUM_THREADS=$threads /usr/bin/time -f "$engine $label: %e s" \
-    "$build/flotsam" run "$work/$engine.yaml" -o "$work/$out" --overwrite -q "$@" 2>&1 |
-    grep -E "^$engine "
+    "$build/flotsam" run "${case_file[$engine]}" -o "$work/$out" --end 600 --overwrite -q "$@" \
+    2>&1 | grep -E "^$engine "
 }
 yes > /dev/null &
 busy=$!

@@ -28,7 +28,7 @@ constexpr int gmsh_line3 = 8;      // 3-node line: end, end, mid
 constexpr int gmsh_triangle6 = 9;  // 6-node triangle: v0 v1 v2 m01 m12 m20
 
 struct GmshTriangles {
-  std::vector<std::vector<std::size_t>> nodes;  // Gmsh node tags
+  std::vector<std::vector<std::size_t>> nodes;  // positions in the NodeTable
   std::vector<long> tags;
 };
 
@@ -72,7 +72,8 @@ NodeTable read_nodes() {
   return table;
 }
 
-// The triangles of one surface; all reversed when all run clockwise.
+// The triangles of one surface, their nodes found in the table; all reversed when all run
+// clockwise.
 void append_surface_triangles(int surface, const NodeTable& nodes, const std::string& source,
                               GmshTriangles& out) {
   GmshTriangles mine;
@@ -81,15 +82,15 @@ void append_surface_triangles(int surface, const NodeTable& nodes, const std::st
     gmsh::model::mesh::getElementsByType(type, element_tags, node_tags, surface);
     const std::size_t per = type == gmsh_triangle3 ? 3 : 6;
     for (std::size_t e = 0; e < element_tags.size(); ++e) {
-      mine.nodes.emplace_back(node_tags.begin() + static_cast<std::ptrdiff_t>(e * per),
-                              node_tags.begin() + static_cast<std::ptrdiff_t>((e + 1) * per));
+      std::vector<std::size_t> tri(per);
+      for (std::size_t k = 0; k < per; ++k) tri[k] = nodes.at(node_tags[e * per + k], source);
+      mine.nodes.push_back(std::move(tri));
       mine.tags.push_back(static_cast<long>(element_tags[e]));
     }
   }
   bool all_clockwise = !mine.nodes.empty();
   for (const auto& tri : mine.nodes) {
-    const Vec2 &a = nodes.xy[nodes.at(tri[0], source)], &b = nodes.xy[nodes.at(tri[1], source)],
-               &c = nodes.xy[nodes.at(tri[2], source)];
+    const Vec2 &a = nodes.xy[tri[0]], &b = nodes.xy[tri[1]], &c = nodes.xy[tri[2]];
     if (cross(b - a, c - a) >= 0) {
       all_clockwise = false;
       break;
@@ -194,12 +195,9 @@ RawMesh extract_raw_mesh(const std::string& source) {
   // 2. The nodes the triangles and lines use, in tag order.
   RawMesh raw;
   raw.source = source;
-  for (auto& tri : triangles.nodes)
-    for (std::size_t k = 0; k < tri.size(); ++k) {
-      const std::size_t n = nodes.at(tri[k], source);
-      nodes.use[n] = std::max(nodes.use[n], k < 3 ? char{2} : char{1});
-      tri[k] = n;  // from here on, positions in the table
-    }
+  for (const auto& tri : triangles.nodes)
+    for (std::size_t k = 0; k < tri.size(); ++k)
+      nodes.use[tri[k]] = std::max(nodes.use[tri[k]], k < 3 ? char{2} : char{1});
   const std::vector<PendingLine> lines = lines_on_triangles(nodes, source);
   std::vector<int> index(nodes.tags.size(), -1);  // by position: index in raw.nodes
   for (std::size_t n = 0; n < nodes.tags.size(); ++n) {

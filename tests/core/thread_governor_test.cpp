@@ -19,16 +19,22 @@ struct Timed {
   long steps = 0;
 };
 
-/// Steps until `wall` seconds have passed, each taking cost(threads, wall time so far).
-Timed run_for(ThreadGovernor& governor, double wall,
-              const std::function<double(int, double)>& cost) {
-  Timed run;
+/// Steps until `run` has taken `wall` seconds in all, each taking cost(threads, its time so far).
+void run_until(ThreadGovernor& governor, Timed& run, double wall,
+               const std::function<double(int, double)>& cost) {
   while (run.seconds < wall) {
     const double s = cost(governor.threads(), run.seconds);
     governor.record(s);
     run.seconds += s;
     ++run.steps;
   }
+}
+
+/// A run of `wall` seconds.
+Timed run_for(ThreadGovernor& governor, double wall,
+              const std::function<double(int, double)>& cost) {
+  Timed run;
+  run_until(governor, run, wall, cost);
   return run;
 }
 
@@ -78,13 +84,7 @@ TEST(ThreadGovernor, FollowsLoadThatComesAndGoes) {
   // Idle for 200 s, loaded from then to 400 s, idle again.
   const auto machine = busy_between(200.0, 400.0);
   Timed run;
-  const auto until = [&](double wall) {
-    while (run.seconds < wall) {
-      const double s = machine(governor.threads(), run.seconds);
-      governor.record(s);
-      run.seconds += s;
-    }
-  };
+  const auto until = [&](double wall) { run_until(governor, run, wall, machine); };
   until(200.0);
   EXPECT_EQ(governor.threads(), 2);
   // Within the longest interval and a trial of the load's start: one thread.
@@ -103,13 +103,7 @@ TEST(ThreadGovernor, CostFallingOverTheRunDoesNotMakeItSwitch) {
   const auto falling = [](int threads, double t) {
     return idle(threads, t) * std::exp2(-t / 0.05);
   };
-  double t = 0.0;
-  while (t < 0.8) {  // the first trials, at 0.1 s and 0.5 s
-    const int threads = governor.threads();
-    const double s = falling(threads, t);
-    governor.record(s);
-    t += s;
-  }
+  run_for(governor, 0.8, falling);  // the first trials, at 0.1 s and 0.5 s
   EXPECT_EQ(governor.changes(), 0);
 }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "core/thread_governor.hpp"
 #include "coupling/simulation.hpp"
 #include "flow/fv/fv_engine.hpp"
 #include "mesh/structured_mesh.hpp"
@@ -50,14 +51,14 @@ struct RunResult {
 };
 
 RunResult run_on_threads(int threads) {
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
   const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 40, .nx = 40, .ny = 8});
   Simulation s(
       flood_case(), mesh,
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
-  s.run();
-  omp_set_num_threads(saved);
+  {
+    const ThreadCountScope scope(threads);
+    s.run();
+  }
   const FiniteVolumeSolver& flow = dynamic_cast<const FvEngine&>(s.flow()).solver();
   double front = 0.0;
   for (int i = 0; i < flow.cells().cell_count; ++i)
@@ -84,7 +85,7 @@ TEST(FvThreadCountDeterminism, OneAndTwoThreadsGiveBitIdenticalRuns) {
 // count, bit for bit.
 TEST(FvThreadCountDeterminism, ThreadCountChangingEveryStepGivesTheSameRun) {
   const RunResult two = run_on_threads(2);
-  const int saved = omp_get_max_threads();
+  const ThreadCountScope restore(1);
   const Mesh mesh = make_rectangle_mesh({.length = 200, .width = 40, .nx = 40, .ny = 8});
   Simulation s(
       flood_case(), mesh,
@@ -94,7 +95,6 @@ TEST(FvThreadCountDeterminism, ThreadCountChangingEveryStepGivesTheSameRun) {
     omp_set_num_threads(k % 2 == 0 ? 1 : 2);
     s.step();
   }
-  omp_set_num_threads(saved);
   const FiniteVolumeSolver& flow = dynamic_cast<const FvEngine&>(s.flow()).solver();
   ASSERT_GE(s.step_count(), 12);
   EXPECT_EQ(flow.state().h, two.water.h);

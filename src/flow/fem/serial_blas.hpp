@@ -8,19 +8,13 @@
 // and gives back the thread count after: the flow state does not depend on the threads
 // (tests/flow/fem/thread_count_determinism_test.cpp), at no measured cost (the solves' blocks are
 // too small for a second thread to pay; docs/performance.md).
-#include <omp.h>
+#include "core/thread_governor.hpp"
 
 namespace flotsam {
 
-class SerialBlas {
+class SerialBlas : ThreadCountScope {
  public:
-  SerialBlas() : threads_(omp_get_max_threads()) { omp_set_num_threads(1); }
-  ~SerialBlas() { omp_set_num_threads(threads_); }
-  SerialBlas(const SerialBlas&) = delete;
-  SerialBlas& operator=(const SerialBlas&) = delete;
-
- private:
-  int threads_;
+  SerialBlas() : ThreadCountScope(1) {}
 };
 
 }  // namespace flotsam

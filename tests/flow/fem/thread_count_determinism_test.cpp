@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../../support/flow_schemes.hpp"
+#include "core/thread_governor.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -20,8 +21,7 @@ namespace {
 
 // Step n on threads[n % threads.size()] threads.
 FlowState run_on_threads(const Mesh& mesh, const Case& c, const std::vector<int>& threads) {
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads.front());
+  const ThreadCountScope restore(threads.front());
   FlowSolverOptions options;
   options.parallel_min_colour = 1;  // every colour in parallel, however small
   ShallowWaterSolver solver(mesh, c, options);
@@ -30,7 +30,6 @@ FlowState run_on_threads(const Mesh& mesh, const Case& c, const std::vector<int>
     omp_set_num_threads(threads[n % threads.size()]);
     solver.step(5.0);
   }
-  omp_set_num_threads(saved);
   return solver.state();
 }
 
