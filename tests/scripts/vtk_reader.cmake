@@ -6,6 +6,7 @@
 
 add_executable(write_vtk_samples ${CMAKE_CURRENT_LIST_DIR}/write_vtk_samples.cpp)
 target_link_libraries(write_vtk_samples PRIVATE flotsam_options flotsam_io flotsam_bodies)
+add_dependencies(unit_tests write_vtk_samples)
 
 set(vtk_samples ${CMAKE_CURRENT_BINARY_DIR}/vtk_samples)
 add_test(NAME io.vtk_write_samples COMMAND write_vtk_samples ${vtk_samples})
