@@ -52,6 +52,16 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
         bridge.largest_jam = std::max(bridge.largest_jam, jam.body_count());
       }
     bridge.max_blockage = std::max(bridge.max_blockage, statistics.bridge_blockage[b]);
+    if (b < statistics.bridge_opening_closed.size())
+      bridge.max_opening_closed =
+          std::max(bridge.max_opening_closed, statistics.bridge_opening_closed[b]);
+    for (std::size_t g = 0; g < gaps_[b].size(); ++g) {  // the jams' closed shares add up
+      double closed = 0.0;                               // [-]
+      for (const Jam& jam : statistics.jams)
+        if (jam.bridge == static_cast<int>(b) && g < jam.gap_opening_closed.size())
+          closed += jam.gap_opening_closed[g];
+      gaps_[b][g].max_opening_closed = std::max(gaps_[b][g].max_opening_closed, closed);
+    }
     if (b < rise.size())
       bridge.max_rise = std::isnan(bridge.max_rise) ? rise[b] : std::max(bridge.max_rise, rise[b]);
     const std::vector<double> cover =

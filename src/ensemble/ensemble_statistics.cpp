@@ -216,12 +216,13 @@ void write_ensemble_tables(const std::string& directory, const std::vector<Membe
   for (const char* c : {"failed", "released", "passed", "left", "trapped", "stranded", "floating"})
     columns.emplace_back(c);
   for (const Bridge& line : geometry.bridges) {
-    for (const char* c : {"blocked {}", "blocking time {} [s]", "blocking bodies {}",
-                          "largest jam {}", "max blockage {} [-]", "max backwater rise {} [m]"})
+    for (const char* c :
+         {"blocked {}", "blocking time {} [s]", "blocking bodies {}", "largest jam {}",
+          "max blockage {} [-]", "max backwater rise {} [m]", "max opening closed {} [-]"})
       columns.push_back(fmt::format(fmt::runtime(c), line.name));
     for (std::size_t g = 0; g < line.gaps.size(); ++g)
-      for (const char* c :
-           {"blocked {} gap {}", "blocking time {} gap {} [s]", "max cover {} gap {} [-]"})
+      for (const char* c : {"blocked {} gap {}", "blocking time {} gap {} [s]",
+                            "max cover {} gap {} [-]", "max opening closed {} gap {} [-]"})
         columns.push_back(fmt::format(fmt::runtime(c), line.name, g + 1));
   }
   CsvWriter members(directory + "/ensemble_members.csv", columns);
@@ -236,12 +237,12 @@ void write_ensemble_tables(const std::string& directory, const std::vector<Membe
       const bool ok = !r.failed && b < r.bridges.size();
       const BridgeOutcome o = ok ? r.bridges[b] : BridgeOutcome{};
       for (double v : {double(o.blocked), o.blocking_time, double(o.blocking_bodies),
-                       double(o.largest_jam), o.max_blockage, o.max_rise})
+                       double(o.largest_jam), o.max_blockage, o.max_rise, o.max_opening_closed})
         row.push_back(ok ? v : nan);
       for (std::size_t g = 0; g < geometry.bridges[b].gaps.size(); ++g) {
         const bool gap_ok = ok && b < r.gaps.size() && g < r.gaps[b].size();
         const GapOutcome go = gap_ok ? r.gaps[b][g] : GapOutcome{};
-        for (double v : {double(go.blocked), go.blocking_time, go.max_cover})
+        for (double v : {double(go.blocked), go.blocking_time, go.max_cover, go.max_opening_closed})
           row.push_back(gap_ok ? v : nan);
       }
     }

@@ -62,12 +62,13 @@ std::string serialize_member(const MemberResult& r) {
   s += fmt::format("counts {} {} {} {} {} {}\n", r.released, r.passed, r.left, r.trapped,
                    r.stranded, r.floating);
   for (const BridgeOutcome& b : r.bridges)
-    s += fmt::format("bridge {} {} {} {} {} {}\n", b.blocked ? 1 : 0, exact(b.blocking_time),
-                     b.blocking_bodies, b.largest_jam, exact(b.max_blockage), exact(b.max_rise));
+    s += fmt::format("bridge {} {} {} {} {} {} {}\n", b.blocked ? 1 : 0, exact(b.blocking_time),
+                     b.blocking_bodies, b.largest_jam, exact(b.max_blockage), exact(b.max_rise),
+                     exact(b.max_opening_closed));
   for (std::size_t b = 0; b < r.gaps.size(); ++b)
     for (const GapOutcome& g : r.gaps[b])
-      s += fmt::format("gap {} {} {} {}\n", b, g.blocked ? 1 : 0, exact(g.blocking_time),
-                       exact(g.max_cover));
+      s += fmt::format("gap {} {} {} {} {}\n", b, g.blocked ? 1 : 0, exact(g.blocking_time),
+                       exact(g.max_cover), exact(g.max_opening_closed));
   for (const BodyOutcome& b : r.bodies)
     s +=
         fmt::format("body {} {} {} {} {} {} {}\n", b.id, exact(b.start.x()), exact(b.start.y()),
@@ -118,6 +119,7 @@ MemberResult parse_member(const std::string& text) {
       b.largest_jam = static_cast<int>(read_long(in));
       b.max_blockage = read_double(in);
       b.max_rise = read_double(in);
+      b.max_opening_closed = read_double(in);
       r.bridges.push_back(b);
     } else if (tag == "gap") {
       const auto bridge = static_cast<std::size_t>(read_long(in));
@@ -126,6 +128,7 @@ MemberResult parse_member(const std::string& text) {
       g.blocked = read_long(in) != 0;
       g.blocking_time = read_double(in);
       g.max_cover = read_double(in);
+      g.max_opening_closed = read_double(in);
       r.gaps[bridge].push_back(g);
     } else if (tag == "body") {
       BodyOutcome b;

@@ -27,12 +27,14 @@ struct BridgeOutcome {
   double max_blockage = 0.0;  // [-] largest blockage ratio of the bridge over the samples
   double max_rise = std::numeric_limits<double>::quiet_NaN();  // [m] largest backwater rise
                                                                // (NaN: no reference flow)
+  double max_opening_closed = 0.0;  // [-] largest closed share of its openings' area (samples)
 };
 
 struct GapOutcome {
   bool blocked = false;
   double blocking_time = std::numeric_limits<double>::quiet_NaN();  // [s] start of the blocking
-  double max_cover = 0.0;  // [-] largest covered share of the gap over the samples
+  double max_cover = 0.0;           // [-] largest covered share of the gap over the samples
+  double max_opening_closed = 0.0;  // [-] largest closed share of the gap's opening area
 };
 
 enum class BodyFate : int { floating = 0, trapped = 1, stranded = 2, left = 3 };

@@ -3,6 +3,8 @@
 // y = 11 m covers [1, 21] m, 20/22 of the first gap.
 #include "ensemble/blocking_monitor.hpp"
 
+#include "coupling/jam_extent.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -91,6 +93,31 @@ TEST_F(OneLogAtOnePier, BelowTheFractionNeverBlocks) {
   monitor.finish(statistics(true), bodies, r);
   EXPECT_FALSE(r.bridges[0].blocked);
   EXPECT_NEAR(r.gaps[0][0].max_cover, 20.0 / 22.0, 1e-12);
+}
+
+// The jam closes its gap's opening over its thickness T from the surface down (model.md
+// "Blocking"): with 2 m of water at both gaps and T = 0.5 m, gap 1 loses 20 m x 0.5 m of its
+// 22 m x 2 m, the bridge 10/88 of its two openings; the member keeps each largest share.
+TEST_F(OneLogAtOnePier, KeepsTheLargestClosedShareOfTheOpenings) {
+  const auto closure = [&](double thickness) {
+    JamStatistics s = statistics(true);
+    s.jams[0].gap_blockage = {20.0 / 22.0, 0.0};
+    s.jams[0].thickness = thickness;  // [m]
+    measure_opening_closure(s, geometry, {{{2.0, 0.0}, {2.0, 0.0}}});
+    return s;
+  };
+  BlockingMonitor monitor(geometry, {0.5, 2.0, 1.0});
+  monitor.sample(0.0, closure(0.25), bodies, {});
+  monitor.sample(1.0, closure(0.5), bodies, {});
+  monitor.sample(2.0, closure(0.1), bodies, {});
+  MemberResult r;
+  monitor.finish(closure(0.1), bodies, r);
+  EXPECT_NEAR(r.gaps[0][0].max_opening_closed, 20.0 * 0.5 / (22.0 * 2.0), 1e-15);
+  EXPECT_EQ(r.gaps[0][1].max_opening_closed, 0.0);
+  EXPECT_NEAR(r.bridges[0].max_opening_closed, 20.0 * 0.5 / 88.0, 1e-15);
+  const MemberResult back = parse_member(serialize_member(r));
+  EXPECT_EQ(back.gaps[0][0].max_opening_closed, r.gaps[0][0].max_opening_closed);
+  EXPECT_EQ(back.bridges[0].max_opening_closed, r.bridges[0].max_opening_closed);
 }
 
 }  // namespace

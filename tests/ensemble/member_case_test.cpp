@@ -134,8 +134,8 @@ TEST(MemberResult, TextFormRoundTripsBitForBit) {
   r.inputs.release_seeds = {2147483647};
   r.released = 7;
   r.trapped = 3;
-  r.bridges.push_back({true, 12.5, 3, 4, 0.6180339887498949, std::nan("")});
-  r.gaps = {{{true, 12.5, 0.75}, {false, std::nan(""), 0.1}}};
+  r.bridges.push_back({true, 12.5, 3, 4, 0.6180339887498949, std::nan(""), 0.1 + 0.7});
+  r.gaps = {{{true, 12.5, 0.75, 1.0 / 7.0}, {false, std::nan(""), 0.1, 0.0}}};
   r.bodies.push_back({9, {1.0 / 3.0, 2.0}, {100.25, -1e-17}, BodyFate::trapped, false});
   const MemberResult back = parse_member(serialize_member(r));
   EXPECT_EQ(serialize_member(back), serialize_member(r));
@@ -143,6 +143,8 @@ TEST(MemberResult, TextFormRoundTripsBitForBit) {
   EXPECT_EQ(back.bodies[0].start.x(), 1.0 / 3.0);
   EXPECT_EQ(back.bridges[0].max_blockage, 0.6180339887498949);
   EXPECT_TRUE(std::isnan(back.bridges[0].max_rise));
+  EXPECT_EQ(back.bridges[0].max_opening_closed, 0.1 + 0.7);
+  EXPECT_EQ(back.gaps[0][0].max_opening_closed, 1.0 / 7.0);
   EXPECT_EQ(back.bodies[0].fate, BodyFate::trapped);
   // A half-written result (no end line) is refused.
   const std::string text = serialize_member(r);
