@@ -100,9 +100,16 @@ TEST(RainSource, RasterMustGiveEveryCellAWeight) {
     }
     return std::string("no error");
   };
-  // Cell 0 lies in the square [0, 1] x [0, 1] m, its centroid below y = 0.9 m.
-  const Vec2 p = cells.centroid[0];
-  const std::string at = fmt::format("cell 0 at ({:.3f}, {:.3f}) m: ", p.x(), p.y());
+  // The message names the first cell in the numbering that has no weight: the first whose
+  // centroid lies in the left pixel (x < 5 m), or below the raster's extent (y < 0.9 m).
+  const auto first_cell = [&](auto outside) {
+    int i = 0;
+    while (!outside(cells.centroid[i])) ++i;
+    const Vec2 p = cells.centroid[i];
+    return fmt::format("cell {} at ({:.3f}, {:.3f}) m: ", i, p.x(), p.y());
+  };
+  const std::string at = first_cell([](const Vec2& p) { return p.x() < 5.0; });
+  const std::string below = first_cell([](const Vec2& p) { return p.y() < 0.9; });
   EXPECT_EQ(error_of(two_pixel_raster(-9999.0, 1.0)),
             "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + at +
                 "its pixel (column 0, row 0) holds nodata; the raster must cover every cell with "
@@ -112,7 +119,7 @@ TEST(RainSource, RasterMustGiveEveryCellAWeight) {
                 "its pixel (column 0, row 0) holds -0.5; a weight must be finite and >= 0; the "
                 "raster must cover every cell with a weight >= 0 (0: no rain)");
   EXPECT_EQ(error_of(two_pixel_raster(1.0, 1.0, 0.9)),  // it starts at y = 0.9 m
-            "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + at +
+            "storm.yaml:7: flow.rain.raster: the rain raster '' gives no weight to " + below +
                 "it lies outside the raster's extent; the raster must cover every cell with a "
                 "weight >= 0 (0: no rain)");
   EXPECT_EQ(error_of(two_pixel_raster(0.0, 1.0)), "no error");  // 0: no rain there
