@@ -7,7 +7,8 @@
 // every sample in between at or above it.
 //
 // The monitor also follows each body from the step it appears (its start for the travel
-// distance) to the end, and the largest jam and backwater rise at each bridge.
+// distance) to the end, and the largest jam, blockage, closed share of the openings and
+// backwater rise at each bridge (and the largest cover and closed share of each gap).
 #include <span>
 #include <vector>
 
