@@ -46,22 +46,18 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
   for (std::size_t b = 0; b < bridges_.size(); ++b) {
     BridgeOutcome& bridge = bridges_[b];
     int bodies_at_bridge = 0;
+    std::vector<double> closed(gaps_[b].size(), 0.0);  // [-] per gap: the jams' shares add up
     for (const Jam& jam : statistics.jams)
       if (jam.bridge == static_cast<int>(b)) {
         bodies_at_bridge += jam.body_count();
         bridge.largest_jam = std::max(bridge.largest_jam, jam.body_count());
+        for (std::size_t g = 0; g < jam.gap_opening_closed.size(); ++g)
+          closed[g] += jam.gap_opening_closed[g];
       }
     bridge.max_blockage = std::max(bridge.max_blockage, statistics.bridge_blockage[b]);
     if (b < statistics.bridge_opening_closed.size())
       bridge.max_opening_closed =
           std::max(bridge.max_opening_closed, statistics.bridge_opening_closed[b]);
-    for (std::size_t g = 0; g < gaps_[b].size(); ++g) {  // the jams' closed shares add up
-      double closed = 0.0;                               // [-]
-      for (const Jam& jam : statistics.jams)
-        if (jam.bridge == static_cast<int>(b) && g < jam.gap_opening_closed.size())
-          closed += jam.gap_opening_closed[g];
-      gaps_[b][g].max_opening_closed = std::max(gaps_[b][g].max_opening_closed, closed);
-    }
     if (b < rise.size())
       bridge.max_rise = std::isnan(bridge.max_rise) ? rise[b] : std::max(bridge.max_rise, rise[b]);
     const std::vector<double> cover =
@@ -70,6 +66,7 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
       GapOutcome& gap = gaps_[b][g];
       double& streak = streak_start_[b][g];
       gap.max_cover = std::max(gap.max_cover, cover[g]);
+      gap.max_opening_closed = std::max(gap.max_opening_closed, closed[g]);
       if (cover[g] < criterion_.fraction) {
         streak = nan;
         continue;

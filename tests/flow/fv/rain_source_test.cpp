@@ -103,8 +103,8 @@ TEST(RainSource, RasterMustGiveEveryCellAWeight) {
   // The message names the first cell in the numbering that has no weight: the first whose
   // centroid lies in the left pixel (x < 5 m), or below the raster's extent (y < 0.9 m).
   const auto first_cell = [&](auto outside) {
-    int i = 0;
-    while (!outside(cells.centroid[i])) ++i;
+    int i = 0;  // the last cell when none is (the expectation then fails)
+    while (i + 1 < cells.cell_count && !outside(cells.centroid[i])) ++i;
     const Vec2 p = cells.centroid[i];
     return fmt::format("cell {} at ({:.3f}, {:.3f}) m: ", i, p.x(), p.y());
   };
