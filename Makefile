@@ -66,7 +66,7 @@ test-slow: build
 	ctest --test-dir $(BUILD) -L slow --output-on-failure
 
 test-sanitize: deps
-	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
 	    -DFLOTSAM_SANITIZE=ON $(CMAKE_FLAGS)
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target unit_tests
 	LSAN_OPTIONS=suppressions=$(CURDIR)/cmake/lsan.supp \
@@ -78,7 +78,7 @@ test-sanitize: deps
 # the corpus once fixed).
 test-fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
+	    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-g1 -O1" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS:%=fuzz_%_reader)
 	@for t in $(FUZZ_TARGETS); do mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
 	    echo "== fuzzing the $$t reader for $(FUZZ_SECONDS) s"; \

@@ -6,10 +6,15 @@
 // (resident memory the engine adds once it has stepped; the mesh's own given apart). Each
 // configuration runs with and without the flood envelopes the engine keeps after every sub-step
 // (flow/flood_envelope.hpp, with the hazard of flow/hazard.hpp), alternating, to give their cost
-// as a ratio measured side by side.
+// as a ratio measured side by side. With --orders, the same mesh's cells in the numbering every
+// mesh gets (elements in Cuthill-McKee order, mesh/element_order.hpp) and along the Hilbert curve
+// (mesh/curve_order.hpp), second order, alternated seven times, medians (docs/performance.md
+// "On a Gmsh mesh"): on the rectangle, or on the circular dam break's Gmsh mesh written by
+// `flotsam mesh bench/circular_dam_break.yaml -o FILE.msh` (its initial state).
 //
 //   cmake --build <build> --target bench_fv_dam_break
 //   <build>/bench/bench_fv_dam_break [TRIANGLES ...]      (default 50000 500000 2000000)
+//   <build>/bench/bench_fv_dam_break --orders [TRIANGLES | FILE.msh] (default 250000)
 #include <omp.h>
 
 #include <chrono>
@@ -21,8 +26,12 @@
 #include <string>
 #include <vector>
 
+#include <algorithm>
+
 #include "flow/flood_envelope.hpp"
 #include "flow/fv/fv_solver.hpp"
+#include "mesh/curve_order.hpp"
+#include "mesh/msh_reader.hpp"
 #include "mesh/structured_mesh.hpp"
 
 namespace flotsam {
@@ -110,10 +119,67 @@ void run(int triangles) {
   }
 }
 
+// A mesh's cells as build_mesh numbers them against the same cells along the curve: the same 40
+// sub-steps of simulated time from the state 2 s after the break, alternated. `what`: a number of
+// triangles (the rectangle's dam break) or a .msh file (the circular dam break).
+void compare_orders(const std::string& what) {
+  const bool file = what.ends_with(".msh");
+  const int n =
+      file ? 0 : std::max(1, static_cast<int>(std::lround(std::sqrt(std::stoi(what) / 2.0))));
+  const Mesh built = file ? read_msh(what)
+                          : make_rectangle_mesh({.length = 1000, .width = 1000, .nx = n, .ny = n});
+  const Mesh along_curve = ordered_along_curve(built);
+  Case c = dam_break_case(2);
+  if (file) {  // walls all round (groups without a condition)
+    c.flow.boundaries.clear();
+    c.flow.initial_eta = Expression("x^2 + y^2 < 100 ? 2 : 1", "bench");  // all wet
+  }
+  FiniteVolumeSolver a(built, c), b(along_curve, c);
+  FiniteVolumeSolver* solvers[2] = {&a, &b};
+  ConservedState start[2];
+  double span = 0.0;  // [s]
+  for (int k = 0; k < 2; ++k) {
+    solvers[k]->initialize();
+    solvers[k]->advance(2.0);
+    start[k] = solvers[k]->state();
+    if (k == 0) span = 40 * solvers[k]->courant_step();
+  }
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    std::vector<double> rate[2];  // [M triangle-steps/s]
+    for (int repeat = 0; repeat < 7; ++repeat)
+      for (int k = 0; k < 2; ++k) {
+        solvers[k]->set_state(start[k]);
+        const long count = solvers[k]->sub_steps().count;
+        const auto t0 = std::chrono::steady_clock::now();
+        solvers[k]->advance(span);
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const long steps = solvers[k]->sub_steps().count - count;
+        rate[k].push_back(solvers[k]->cells().cell_count * static_cast<double>(steps) / s / 1e6);
+      }
+    double median[2];
+    for (int k = 0; k < 2; ++k) {
+      std::sort(rate[k].begin(), rate[k].end());
+      median[k] = rate[k][rate[k].size() / 2];
+    }
+    std::printf(
+        "%d triangles  threads %d: Cuthill-McKee %.2f M triangle-steps/s (%.2f-%.2f), along the "
+        "curve %.2f (%.2f-%.2f), ratio %.3f\n",
+        a.cells().cell_count, threads, median[0], rate[0].front(), rate[0].back(), median[1],
+        rate[1].front(), rate[1].back(), median[0] / median[1]);
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 }  // namespace flotsam
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--orders") {
+    flotsam::compare_orders(argc > 2 ? argv[2] : "250000");
+    return 0;
+  }
   std::vector<int> sizes;
   for (int k = 1; k < argc; ++k) sizes.push_back(std::atoi(argv[k]));
   if (sizes.empty()) sizes = {50000, 500000, 2000000};

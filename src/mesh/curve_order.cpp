@@ -76,8 +76,6 @@ Mesh ordered_along_curve(const Mesh& mesh) {
   const std::vector<int> mid_order =
       sorting_permutation(std::vector<std::uint64_t>(key.begin() + vertex_count, key.end()));
   for (int m : mid_order) node_order.push_back(vertex_count + m);
-  std::vector<int> new_node(node_count);
-  for (int n = 0; n < node_count; ++n) new_node[node_order[n]] = n;
 
   // Elements: the cell of the mean of their vertices' cells (integers: the same on any machine).
   std::vector<std::uint64_t> element_key(element_count);
@@ -91,12 +89,19 @@ Mesh ordered_along_curve(const Mesh& mesh) {
     element_key[e] = curve_index(mean);
   }
   const std::vector<int> element_order = sorting_permutation(element_key);
-  std::vector<int> new_element(element_count);
-  for (int e = 0; e < element_count; ++e) new_element[element_order[e]] = e;
 
+  return renumbered(mesh, node_order, element_order);
+}
+
+Mesh renumbered(const Mesh& mesh, const std::vector<int>& node_order,
+                const std::vector<int>& element_order) {
+  const int node_count = mesh.node_count(), element_count = mesh.element_count();
+  std::vector<int> new_node(node_count), new_element(element_count);
+  for (int n = 0; n < node_count; ++n) new_node[node_order[n]] = n;
+  for (int e = 0; e < element_count; ++e) new_element[element_order[e]] = e;
   Mesh out;
   out.source = mesh.source;
-  out.vertex_count = vertex_count;
+  out.vertex_count = mesh.vertex_count;
   out.group_names = mesh.group_names;
   out.nodes.resize(node_count);
   out.node_tags.resize(node_count);

@@ -34,4 +34,9 @@ std::vector<int> sorting_permutation(const std::vector<std::uint64_t>& keys);
 /// The mesh renumbered as above: the same nodes, elements, boundary edges and groups.
 Mesh ordered_along_curve(const Mesh& mesh);
 
+/// The mesh with node i of the result node_order[i] of `mesh` and element i element_order[i]
+/// (permutations; vertices must stay first), boundary edges in the order of (element, local edge).
+Mesh renumbered(const Mesh& mesh, const std::vector<int>& node_order,
+                const std::vector<int>& element_order);
+
 }  // namespace flotsam

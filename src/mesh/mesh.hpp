@@ -85,7 +85,8 @@ struct RawMesh {
 
 /// Builds and validates the mesh: P2 mid nodes for 3-node triangles (edge midpoints), mid nodes
 /// shared between neighbours, adjacency, boundary groups, areas; numbered vertices first, nodes
-/// and elements along a space-filling curve (mesh/curve_order.hpp), whatever the input's order.
+/// along a space-filling curve (mesh/curve_order.hpp), elements in Cuthill-McKee order from it
+/// (mesh/element_order.hpp), whatever the input's order.
 /// Throws InputError naming the file and the element or node for: degenerate or inverted
 /// elements, nodes no element uses, non-manifold edges, 6-node neighbours disagreeing on a mid
 /// node, and boundary edges without a named group.

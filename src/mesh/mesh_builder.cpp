@@ -15,6 +15,7 @@
 
 #include "core/error.hpp"
 #include "mesh/curve_order.hpp"
+#include "mesh/element_order.hpp"
 #include "mesh/mesh.hpp"
 
 namespace flotsam {
@@ -200,7 +201,9 @@ Mesh build_mesh(const RawMesh& raw) {
   mesh.group_names = std::move(names);
 
   for (int t = 0; t < element_count; ++t) mesh.area[t] = 0.5 * mesh.jacobian(t).determinant();
-  return ordered_along_curve(mesh);
+  // Nodes along the curve, elements in Cuthill-McKee order from it (docs/mesh.md
+  // "Numbering").
+  return ordered_by_cuthill_mckee(ordered_along_curve(mesh));
 }
 
 }  // namespace flotsam

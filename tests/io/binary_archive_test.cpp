@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <sstream>
 
 #include "../support/file_size_limit.hpp"
 #include "../support/scratch_path.hpp"
@@ -145,7 +145,9 @@ TEST(BinaryArchive, ReadsVersionTwoAndWritesVersionThree) {
     w.close();
   }
   std::ifstream in(path, std::ios::binary);
-  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  const std::string written = bytes.str();
   EXPECT_EQ(archive_version, 3u);
   EXPECT_EQ(written, archive_bytes(3, x));  // the same bytes, XXH3 checksums included
   std::filesystem::remove(path);

@@ -1,7 +1,7 @@
 // The numbering of build_mesh along a space-filling curve (mesh/curve_order.hpp): the Hilbert
-// index, the order of a hand-checked square, and on a generated channel fed in shuffled order:
-// the same mesh whatever the input's order, every node, element and boundary edge kept with its
-// tag, and a numbering far more local than the input's.
+// index, the order of a hand-checked square (its elements then in Cuthill-McKee order), and on a
+// generated channel fed in shuffled order: the same mesh whatever the input's order, every node,
+// element and boundary edge kept with its tag, and a numbering far more local than the input's.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,21 +57,23 @@ TEST(CurveOrder, UnitSquareRunsLowerLeftUpperLeftUpperRightLowerRight) {
   ASSERT_EQ(mesh.vertex_count, 4);
   EXPECT_EQ(std::vector<long>(mesh.node_tags.begin(), mesh.node_tags.begin() + 4),
             (std::vector<long>{11, 14, 13, 12}));
-  EXPECT_EQ(mesh.element_tags, (std::vector<long>{102, 101}));
+  // Elements in Cuthill-McKee order (mesh/element_order.hpp): 102 comes first on the curve, and
+  // George & Liu's search from it ends at the far element, 101, which starts the order.
+  EXPECT_EQ(mesh.element_tags, (std::vector<long>{101, 102}));
   EXPECT_EQ(mesh.nodes[1], Vec2(0, 1));
-  // Element 102 (now 0) is (0,0) (1,1) (0,1): new vertices 0 2 1 in its own local order.
+  // Element 101 (now 0) is (0,0) (1,0) (1,1): new vertices 0 3 2 in its own local order.
   EXPECT_EQ(mesh.elements[0][0], 0);
-  EXPECT_EQ(mesh.elements[0][1], 2);
-  EXPECT_EQ(mesh.elements[0][2], 1);
-  // Boundary edges in element order: 102's edges 1 (top) and 2 (left), then 101's 0 and 1.
+  EXPECT_EQ(mesh.elements[0][1], 3);
+  EXPECT_EQ(mesh.elements[0][2], 2);
+  // Boundary edges in element order: 101's edges 0 (bottom) and 1 (right), then 102's 1 and 2.
   ASSERT_EQ(mesh.boundary.size(), 4u);
   const auto group = [&](int b) { return mesh.group_names[mesh.boundary[b].group]; };
-  EXPECT_EQ(group(0), "top");
-  EXPECT_EQ(group(1), "left");
-  EXPECT_EQ(group(2), "bottom");
-  EXPECT_EQ(group(3), "right");
-  EXPECT_EQ(mesh.neighbours[0][0], 1);
-  EXPECT_EQ(mesh.neighbours[1][2], 0);
+  EXPECT_EQ(group(0), "bottom");
+  EXPECT_EQ(group(1), "right");
+  EXPECT_EQ(group(2), "top");
+  EXPECT_EQ(group(3), "left");
+  EXPECT_EQ(mesh.neighbours[0][2], 1);
+  EXPECT_EQ(mesh.neighbours[1][0], 0);
 }
 
 /// The plain lists of a mesh (6-node triangles, 3-node boundary lines), as a reader gives them.

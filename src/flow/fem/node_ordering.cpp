@@ -1,58 +1,15 @@
 #include "flow/fem/node_ordering.hpp"
 
-#include <algorithm>
+#include "core/cuthill_mckee.hpp"
 
 namespace flotsam {
 
 std::vector<int> reverse_cuthill_mckee(
     const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& pattern) {
   const int n = static_cast<int>(pattern.cols());
-  const int* start = pattern.outerIndexPtr();
-  const int* index = pattern.innerIndexPtr();
-  const auto degree = [&](int i) { return start[i + 1] - start[i]; };
-  std::vector<int> order, level(n, -1);
-  order.reserve(n);
-  std::vector<char> numbered(n, 0);
-  // Breadth-first levels from `root` over the nodes not yet numbered; appends them to `out`.
-  const auto sweep = [&](int root, std::vector<int>& out, bool by_degree) {
-    const size_t first = out.size();
-    out.push_back(root);
-    numbered[root] = 1;
-    level[root] = 0;
-    for (size_t head = first; head < out.size(); ++head) {
-      const int i = out[head];
-      const size_t children = out.size();
-      for (int p = start[i]; p < start[i + 1]; ++p)
-        if (!numbered[index[p]]) {
-          numbered[index[p]] = 1;
-          level[index[p]] = level[i] + 1;
-          out.push_back(index[p]);
-        }
-      if (by_degree)
-        std::stable_sort(out.begin() + static_cast<long>(children), out.end(),
-                         [&](int a, int b) { return degree(a) < degree(b); });
-    }
-  };
-  std::vector<int> trial;
-  for (int seed = 0; seed < n; ++seed) {
-    if (numbered[seed]) continue;
-    // A pseudo-peripheral root: the last level's node of least degree, until the depth stops
-    // growing (George and Liu's heuristic, a few sweeps).
-    int root = seed, depth = -1;
-    for (int round = 0; round < 8; ++round) {
-      trial.clear();
-      sweep(root, trial, false);
-      for (int i : trial) numbered[i] = 0;
-      const int last = level[trial.back()];
-      if (last <= depth) break;
-      depth = last;
-      int best = trial.back();
-      for (auto it = trial.rbegin(); it != trial.rend() && level[*it] == last; ++it)
-        if (degree(*it) < degree(best)) best = *it;
-      root = best;
-    }
-    sweep(root, order, true);
-  }
+  const std::span<const int> start(pattern.outerIndexPtr(), static_cast<std::size_t>(n) + 1);
+  const std::span<const int> index(pattern.innerIndexPtr(), static_cast<std::size_t>(start[n]));
+  const std::vector<int> order = cuthill_mckee(start, index);
   std::vector<int> new_index(n);
   for (int k = 0; k < n; ++k) new_index[order[k]] = n - 1 - k;
   return new_index;

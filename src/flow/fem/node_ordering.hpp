@@ -1,9 +1,9 @@
 #pragma once
-// A numbering of a sparse matrix's unknowns by locality: reverse Cuthill-McKee (breadth-first
-// levels from a pseudo-peripheral start, each node's new neighbours in increasing degree, the
-// order reversed). Neighbours then lie close in memory (a sweep over the matrix touches a window
-// of the vectors, not all of them), and a zero fill-in incomplete factor on this order keeps more
-// of the exact one than on a random order (docs/performance.md "The segregated step").
+// A numbering of a sparse matrix's unknowns by locality: reverse Cuthill-McKee (the order of
+// core/cuthill_mckee.hpp over the matrix's graph, reversed). Neighbours then lie close in memory (a
+// sweep over the matrix touches a window of the vectors, not all of them), and a zero fill-in
+// incomplete factor on this order keeps more of the exact one than on a random order
+// (docs/performance.md "The segregated step").
 #include <Eigen/Sparse>
 #include <vector>
 

@@ -294,6 +294,19 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
   stage_courant_step_ = case_.flow.fv.courant * dt_min;
 }
 
+SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 direction) const {
+  evaluate(U_, U_.time);
+  SectionFlux sum;
+  for (const int e : edges) {
+    const Vec2 n = cells_.normal[e];
+    const double sign = n.dot(direction) >= 0.0 ? 1.0 : -1.0, l = cells_.length[e];
+    const double side = sign > 0.0 ? side_right_[e] : side_left_[e];  // the receiving cell's
+    sum.discharge += l * sign * flux_mass_[e];
+    sum.momentum += l * sign * (Vec2(flux_x_[e], flux_y_[e]) + side * n);
+  }
+  return sum;
+}
+
 void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
   load_cells(U);
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);

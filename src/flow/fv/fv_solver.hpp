@@ -15,6 +15,7 @@
 // (flow_sources.hpp, (M-24)).
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -36,6 +37,12 @@ struct ConservedState {
   double time = 0.0;           // [s]
   std::vector<double> h;       // [m]
   std::vector<double> hu, hv;  // [m^2/s]
+};
+
+/// The numerical flux through a line of edges (a cross-section), times the edges' lengths.
+struct SectionFlux {
+  double discharge = 0.0;        // [m^3/s]
+  Vec2 momentum = Vec2::Zero();  // [m^4/s^2] h u (u.n) + the pressure g h^2 / 2 (times rho: [N])
 };
 
 /// What the sub-steps of the run so far did (the end-of-run summary).
@@ -98,6 +105,11 @@ class FiniteVolumeSolver {
   /// The Courant step [s] of the current state (M-16) (infinite when all is dry and still).
   double courant_step() const;
   double wet_fraction() const;  // [-] of the cells' area deeper than output.wet_depth
+  /// The scheme's own fluxes through `edges` at the current state (L evaluated as a sub-step's
+  /// first stage does), each counted towards `direction`: the discharge and the momentum flux as
+  /// the cell on that side receives it (with its hydrostatic correction, (M-12)). A section's
+  /// momentum balance checked with these is the scheme's, whatever side a sampled value takes.
+  SectionFlux section_flux(std::span<const int> edges, Vec2 direction) const;
   double dry_depth() const { return dry_depth_; }  // [m]
 
  private:

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../../support/reach_momentum.hpp"
 #include "core/error.hpp"
 #include "flow/fv/fv_solver.hpp"
 #include "fv_test_cases.hpp"
@@ -45,6 +46,31 @@ TEST(FvSolver, LakeAtRestOnAFlatBedStaysExactlyStill) {
   EXPECT_LE(d.discharge, 1e-13);
   EXPECT_LE(d.depth, 1e-13);
   EXPECT_DOUBLE_EQ(s.time(), 2.5);
+}
+
+// A uniform state's fluxes through a line of cell edges are the exact physical ones (HLLC between
+// equal states, no gradient): Q = h u W, the x-momentum flux (h u^2 + g h^2 / 2) W, the y one h u v
+// W.
+TEST(FvSolver, SectionFluxOfAUniformFlowIsTheExactFlux) {
+  const Mesh mesh = basin_mesh();  // 10 m x 4 m
+  const Case c = test::closed_basin_case(1.5);
+  FiniteVolumeSolver s(mesh, c);
+  s.initialize();
+  const double h = 1.5, u = 0.8, v = 0.3, W = 4.0, g = c.flow.gravity;
+  ConservedState U = s.state();
+  std::fill(U.h.begin(), U.h.end(), h);
+  std::fill(U.hu.begin(), U.hu.end(), h * u);
+  std::fill(U.hv.begin(), U.hv.end(), h * v);
+  s.set_state(U);
+  const std::vector<int> edges = test::edges_on_line_x(s.cells(), 5.0);
+  ASSERT_NEAR(test::section_width(s.cells(), edges), W, 1e-12);
+  const SectionFlux f = s.section_flux(edges, Vec2(1.0, 0.0));
+  EXPECT_NEAR(f.discharge, h * u * W, 1e-12);
+  EXPECT_NEAR(f.momentum.x(), (h * u * u + 0.5 * g * h * h) * W, 1e-11);
+  EXPECT_NEAR(f.momentum.y(), h * u * v * W, 1e-12);
+  const SectionFlux back = s.section_flux(edges, Vec2(-1.0, 0.0));  // counted the other way
+  EXPECT_NEAR(back.discharge, -f.discharge, 1e-12);
+  EXPECT_NEAR(back.momentum.x(), -f.momentum.x(), 1e-11);
 }
 
 TEST(FvSolver, LakeAtRestOverASubmergedBumpyBedStaysStill) {
