@@ -14,13 +14,14 @@
 
 namespace flotsam::test {
 
-/// The finite-volume engine's edges on the line x = x0 (a line of cell edges of the mesh).
+/// The finite-volume engine's interior edges on the line x = x0 (a line of cell edges of the mesh).
 inline std::vector<int> edges_on_line_x(const CellMesh& c, double x0) {
   std::vector<int> edges;
   for (int e = 0; e < c.edge_count; ++e) {
     const int i = c.left[e];
     const Vec2 midpoint = c.centroid[i] + c.to_edge[i][c.left_slot[e]];
-    if (std::abs(midpoint.x() - x0) < 1e-9 && std::abs(c.normal[e].y()) < 1e-12) edges.push_back(e);
+    if (c.right[e] >= 0 && std::abs(midpoint.x() - x0) < 1e-9 && std::abs(c.normal[e].y()) < 1e-12)
+      edges.push_back(e);
   }
   return edges;
 }
