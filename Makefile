@@ -78,7 +78,7 @@ test-sanitize: deps
 # the corpus once fixed).
 test-fuzz: deps
 	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-g1 -O1" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
+	    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-g1 -O1 -DNDEBUG" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DFLOTSAM_FUZZ=ON
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS:%=fuzz_%_reader)
 	@for t in $(FUZZ_TARGETS); do mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
 	    echo "== fuzzing the $$t reader for $(FUZZ_SECONDS) s"; \
