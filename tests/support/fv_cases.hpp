@@ -85,6 +85,17 @@ inline void run_to(FvEngine& engine, double end, double step) {
   }
 }
 
+/// Runs the engine `window` [s] further (coupling steps of `step` [s]) and returns the largest
+/// change of a cell's depth over it [m]: a steady state's measure.
+inline double depth_change_over(FvEngine& engine, double window, double step) {
+  const std::vector<double> before = engine.solver().state().h;
+  run_to(engine, engine.time() + window, step);
+  double change = 0.0;
+  for (std::size_t i = 0; i < before.size(); ++i)
+    change = std::max(change, std::abs(engine.solver().state().h[i] - before[i]));
+  return change;
+}
+
 /// The L1 error of a cell field against an exact solution taken at the cells' centroids,
 /// per unit area of the domain: sum_i A_i |phi_i - phi(x_i)| / sum_i A_i [unit of phi].
 inline double l1_error(const CellMesh& cells, const std::vector<double>& phi,

@@ -59,6 +59,41 @@ inline double reach_momentum(const FlowEngine& flow, double x1, double x2) {
   return water_density_default * sum;
 }
 
+/// The reach between the lines of cell edges x1 < x2 and its momentum balance over a window:
+/// start() when the window opens, sample() at each instant inside it, balance() at its end.
+class ReachBalance {
+ public:
+  ReachBalance(const FlowEngine& flow, double x1, double x2)
+      : x1_(x1),
+        x2_(x2),
+        cells_(dynamic_cast<const FvEngine&>(flow).solver().cells()),
+        upstream_(edges_on_line_x(cells_, x1)),
+        downstream_(edges_on_line_x(cells_, x2)) {}
+  double upstream_width() const { return section_width(cells_, upstream_); }      // [m]
+  double downstream_width() const { return section_width(cells_, downstream_); }  // [m]
+  void start(const FlowEngine& flow) { momentum_start_ = reach_momentum(flow, x1_, x2_); }
+  void sample(const FlowEngine& flow) {
+    double d1 = 0.0, d2 = 0.0;
+    flux_sum_ += section_momentum(flow, upstream_, d1) - section_momentum(flow, downstream_, d2);
+    depth_sum_ += d2;
+    ++samples_;
+  }
+  /// mean of M(x1) - M(x2) - (P(now) - P(start)) / window [N]: the mean force the reach's
+  /// water exchanged with what stands in it.
+  double balance(const FlowEngine& flow, double window) const {
+    return flux_sum_ / samples_ - (reach_momentum(flow, x1_, x2_) - momentum_start_) / window;
+  }
+  double downstream_depth() const { return depth_sum_ / samples_; }  // [m] mean at x2
+
+ private:
+  double x1_, x2_;  // [m]
+  const CellMesh& cells_;
+  std::vector<int> upstream_, downstream_;
+  double momentum_start_ = 0.0;              // [N s]
+  double flux_sum_ = 0.0, depth_sum_ = 0.0;  // [N], [m]
+  int samples_ = 0;
+};
+
 /// The depth [m] upstream whose momentum function per width, q^2 / h + g h^2 / 2, exceeds that
 /// of depth h2 by `excess` [m^3/s^2] (the subcritical root, by Newton from h2).
 inline double depth_upstream(double q, double h2, double excess) {

@@ -11,7 +11,7 @@
 // the section's edges (tests/support/reach_momentum.hpp: whatever the cells' numbering), P the
 // reach's momentum, F the force the raft exchanges with the water (the sum of its reaction, exact
 // to round-off by two_way_momentum_exchange.cpp). Checked: the balance within 2 % of F (measured
-// -1.04 %; -1.07 % with the elements along the curve instead of in Cuthill-McKee order; the seiches
+// -1.05 %; -1.07 % with the elements along the curve instead of in Cuthill-McKee order; the seiches
 // make the 120 samples' residual 3,900 N rms against F = 2,150 N, and the change of P over the
 // window is 3.4 % of F), and the rise the run reports for the bridge (its backwater section 20 m
 // upstream, against the same flow without the raft, `output.backwater`) within 5 % of the rise
@@ -68,29 +68,22 @@ TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
       make_rectangle_mesh({.length = length, .width = width, .nx = 100, .ny = 14}),
       {.output_directory = {}, .overwrite = false, .write_output = false, .progress = false});
   s.initialize();
-  const CellMesh& cells = dynamic_cast<const FvEngine&>(s.flow()).solver().cells();
-  const std::vector<int> upstream = test::edges_on_line_x(cells, 120.0);
-  const std::vector<int> downstream = test::edges_on_line_x(cells, 180.0);
-  ASSERT_NEAR(test::section_width(cells, upstream), width, 1e-9);
-  ASSERT_NEAR(test::section_width(cells, downstream), width, 1e-9);
-  double balance = 0.0, force = 0.0, rise = 0.0, h2 = 0.0;  // means over the averaging time
+  test::ReachBalance reach(s.flow(), 120.0, 180.0);
+  ASSERT_NEAR(reach.upstream_width(), width, 1e-9);
+  ASSERT_NEAR(reach.downstream_width(), width, 1e-9);
+  double force = 0.0, rise = 0.0;  // means over the averaging time
   int n = 0;
-  double momentum_start = 0.0;  // [N s] in the reach at the start of the averaging time
   while (!s.done()) {
     s.step();
-    if (std::abs(s.time() - (end_time - averaging_time)) < 1e-9)
-      momentum_start = test::reach_momentum(s.flow(), 120.0, 180.0);
+    if (std::abs(s.time() - (end_time - averaging_time)) < 1e-9) reach.start(s.flow());
     if (s.time() <= end_time - averaging_time + 1e-9) continue;
-    double d1 = 0.0, d2 = 0.0;
-    balance += test::section_momentum(s.flow(), upstream, d1) -
-               test::section_momentum(s.flow(), downstream, d2);
-    h2 += d2;
+    reach.sample(s.flow());
     force += s.bodies().reaction_force[0].x();
     rise += s.backwater_rise().at(0);
     ++n;
   }
-  balance /= n, force /= n, rise /= n, h2 /= n;
-  balance -= (test::reach_momentum(s.flow(), 120.0, 180.0) - momentum_start) / averaging_time;
+  force /= n, rise /= n;
+  const double balance = reach.balance(s.flow(), averaging_time), h2 = reach.downstream_depth();
   const double q = Q / width;  // [m^2/s]
   const double predicted =
       test::depth_upstream(q, h2, force / (rho * width)) - test::depth_upstream(q, h2, 0.0);  // [m]
