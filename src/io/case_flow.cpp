@@ -45,6 +45,7 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
     fv.cells = m.get("cells").choice<FvCells>(
         {{"elements", FvCells::elements}, {"split", FvCells::split}});
   fv.velocity_depth = m.number("velocity_depth", fv.velocity_depth, Range::positive());
+  fv.time_levels = static_cast<int>(m.integer("time_levels", fv.time_levels, Range::between(1, 8)));
   return fv;
 }
 

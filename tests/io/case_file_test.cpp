@@ -411,18 +411,20 @@ TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
   const Case c =
       parse_case(edited("  initial:",
                         "  engine: fv\n  fv: {order: 1, courant: 0.4, velocity_depth: 0.002, "
-                        "cells: split}\n  initial:"),
+                        "cells: split, time_levels: 4}\n  initial:"),
                  "case.yaml");
   EXPECT_EQ(c.flow.engine, FlowEngineKind::fv);
   EXPECT_EQ(c.flow.fv.order, 1);
   EXPECT_EQ(c.flow.fv.courant, 0.4);
   EXPECT_EQ(c.flow.fv.cells, FvCells::split);
   EXPECT_EQ(c.flow.fv.velocity_depth, 0.002);
+  EXPECT_EQ(c.flow.fv.time_levels, 4);
   const Case d = parse_case(edited("  initial:", "  engine: fv\n  initial:"), "case.yaml");
   EXPECT_EQ(d.flow.engine, FlowEngineKind::fv);
   EXPECT_EQ(d.flow.fv.order, 2);  // the defaults
   EXPECT_EQ(d.flow.fv.courant, 0.9);
   EXPECT_EQ(d.flow.fv.cells, FvCells::elements);
+  EXPECT_EQ(d.flow.fv.time_levels, 1);
   EXPECT_EQ(d.flow.dry_depth_or_default(), 1e-5);  // the finite volumes' (docs/model.md (M-15))
   // A generated mesh of three-node triangles for the finite volumes, six-node for the FEM.
   EXPECT_EQ(d.mesh.element_order, 1);
@@ -636,7 +638,9 @@ TEST(CaseFileError, EngineKeysAreChecked) {
             "case.yaml:6: flow.fv.cells: unknown value 'quads'; expected one of: elements, split");
   EXPECT_EQ(error_of(fv("limiter: minmod")),
             "case.yaml:6: flow.fv.limiter: unknown key; allowed here: order, courant, cells, "
-            "velocity_depth");
+            "velocity_depth, time_levels");
+  EXPECT_EQ(error_of(fv("time_levels: 9")),
+            "case.yaml:6: flow.fv.time_levels: expected an integer in [1, 8], got 9");
 }
 
 TEST(CaseFileError, BedExpressionIsCheckedWhenRead) {

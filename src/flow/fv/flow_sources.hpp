@@ -23,6 +23,7 @@ class FlowSources {
   FlowSources(const std::vector<FlowSource>& sources, const Mesh& mesh, const CellMesh& cells);
 
   bool any() const { return !sources_.empty(); }
+  int count() const { return static_cast<int>(sources_.size()); }
 
   /// Sets depth[i] [m] to the depth the sources let into cell i over [t0, t1] [s] (the cells of
   /// no source untouched, 0 when `depth` is new) and returns the volume they let in [m^3].

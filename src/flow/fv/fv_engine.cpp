@@ -176,8 +176,9 @@ void FvEngine::save(ArchiveWriter& w, const std::string& prefix) const {
   w.write(prefix + ".hu", U.hu);
   w.write(prefix + ".hv", U.hv);
   write_water_balance(w, prefix, b);
-  w.write(prefix + ".sub_steps", std::vector<double>{static_cast<double>(s.count), s.smallest,
-                                                     s.total, static_cast<double>(s.rejected)});
+  w.write(prefix + ".sub_steps",
+          std::vector<double>{static_cast<double>(s.count), s.smallest, s.total,
+                              static_cast<double>(s.rejected), s.cell_updates});
   envelope_.save(w, prefix);
 }
 
@@ -210,8 +211,8 @@ void FvEngine::restore_state(ArchiveReader& r, const std::string& prefix, bool o
   solver_.set_state(U);
   solver_.restore_water_balance(read_water_balance(r, prefix));
   const auto s = r.read<double>(prefix + ".sub_steps");
-  solver_.restore_sub_steps(
-      {static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1), s.at(2)});
+  solver_.restore_sub_steps({static_cast<long>(s.at(0)), static_cast<long>(s.at(3)), s.at(1),
+                             s.at(2), s.size() > 4 ? s[4] : 0.0});
   envelope_.restore(r, prefix, own_rating);
 }
 
@@ -227,9 +228,8 @@ std::string FvEngine::summary() const {
                                   ? fmt::format("Courant step smallest {:.3g} s, mean {:.3g} s",
                                                 s.smallest, s.count > 0 ? s.total / s.count : 0.0)
                                   : std::string("no Courant limit (the water was dry and still)");
-  // The work done, whatever the machine: one cell advanced one sub-step (a retried one too).
-  const double updates =
-      static_cast<double>(solver_.cells().cell_count) * static_cast<double>(s.count + s.rejected);
+  // The work done, whatever the machine: one cell advanced one step (a retried one too).
+  const double updates = s.cell_updates;
   return fmt::format(
              "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {:.4g} cell "
              "updates, {}; wet (deeper than {:g} m) {:.1f} % of the area\n",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include "core/constants.hpp"
@@ -63,6 +64,9 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   if (sources_.any()) source_depth_.assign(n, 0.0);
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
+  level_ties_ = tied_cells();
+  all_edges_.resize(m);
+  for (int e = 0; e < m; ++e) all_edges_[e] = e;
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
   deck_edges_ = find_deck_edges(cells_, flow_case.bridges);
   if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
@@ -137,15 +141,16 @@ double FiniteVolumeSolver::wet_fraction() const {
 // ---- the finite-volume operator L -------------------------------------------------------
 
 void FiniteVolumeSolver::load_cells(const ConservedState& U) const {
-  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < cells_.cell_count; ++i) {
-    const double h = U.h[i];
-    field_.h[i] = h;
-    field_.eta[i] = h + z_[i];
-    field_.u[i] = h > 0.0 ? velocity(h, U.hu[i], eps4) : 0.0;
-    field_.v[i] = h > 0.0 ? velocity(h, U.hv[i], eps4) : 0.0;
-  }
+  for (int i = 0; i < cells_.cell_count; ++i) load_cell(i, U.h[i], U.hu[i], U.hv[i]);
+}
+
+void FiniteVolumeSolver::load_cell(int i, double h, double hu, double hv) const {
+  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
+  field_.h[i] = h;
+  field_.eta[i] = h + z_[i];
+  field_.u[i] = h > 0.0 ? velocity(h, hu, eps4) : 0.0;
+  field_.v[i] = h > 0.0 ? velocity(h, hv, eps4) : 0.0;
 }
 
 void FiniteVolumeSolver::fill_field(CellField& field) const {
@@ -159,12 +164,14 @@ void FiniteVolumeSolver::fill_field(CellField& field) const {
 //   z* = max(z_L, z_R),   h*_L = max(0, h_L + z_L - z*),   h*_R = max(0, h_R + z_R - z*),
 // the HLLC flux between (h*_L, u_L) and (h*_R, u_R), and each side's correction
 // g/2 (h_side^2 - h*_side^2) that keeps a lake at rest at rest.
-void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
+void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
+                                             std::span<const int> boundary_edges, double t,
+                                             LevelRange levels) const {
   const CellMesh& c = cells_;
   const auto& conditions = case_.flow.boundaries;
   // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry).
   std::vector<double> weight_sum(conditions.size(), 0.0), length_sum(conditions.size(), 0.0);
-  for (int edge : c.boundary_edges) {
+  for (int edge : boundary_edges) {
     const int k = boundaries_.group_condition[c.group[edge]];
     if (k < 0 || conditions[k].kind != BoundaryCondition::Kind::discharge) continue;
     const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
@@ -172,7 +179,7 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
     weight_sum[k] += c.length[edge] * edge_discharge_[edge];
     length_sum[k] += c.length[edge];
   }
-  for (int edge : c.boundary_edges) {
+  for (int edge : boundary_edges) {
     const int k = boundaries_.group_condition[c.group[edge]];
     if (k < 0 || conditions[k].kind != BoundaryCondition::Kind::discharge) continue;
     const double Q = conditions[k].value(t);
@@ -181,8 +188,10 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
   }
 
   const double g = g_;
+  const auto count = static_cast<std::ptrdiff_t>(edges.size());
 #pragma omp parallel for schedule(static)
-  for (int edge = 0; edge < c.edge_count; ++edge) {
+  for (std::ptrdiff_t index = 0; index < count; ++index) {
+    const int edge = edges[index];
     const Vec2 n = c.normal[edge];
     const FaceState L = face_value(field_, c.left[edge], c.left_slot[edge]);
     const int j = c.right[edge];
@@ -212,22 +221,22 @@ void FiniteVolumeSolver::compute_edge_fluxes(double t) const {
     edge_speed_[edge] = f.max_speed;
   }
 
-  deck_fluxes();
+  deck_fluxes(levels);
 
   std::fill(outflow_rate_.begin(), outflow_rate_.end(), 0.0);
-  for (int edge : c.boundary_edges)
-    outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
+  for (int edge : boundary_edges) outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
 }
 
 // The edges a deck stands on (deck_flux.hpp), once the water reaches its soffit on either side:
 // the ordinary discharge limited to the structure's, carried with the upstream cell's velocity;
 // each side's own hydrostatic pressure on the structure (side_*: the whole g h^2 / 2, the flux
 // holding none); and the jets' momentum, less what the discharge carried, to the downstream side.
-void FiniteVolumeSolver::deck_fluxes() const {
+void FiniteVolumeSolver::deck_fluxes(LevelRange levels) const {
   const CellMesh& c = cells_;
   const double g = g_;
   for (const DeckEdge& d : deck_edges_) {
     const int e = d.edge, i = c.left[e], j = c.right[e];
+    if (!levels.holds(levels_, e)) continue;  // not in this part of L (local time stepping)
     if (std::max(field_.eta[i], field_.eta[j]) < d.soffit) continue;  // free: the ordinary flux
     const FaceState L = face_value(field_, i, c.left_slot[e]);
     const FaceState R = face_value(field_, j, c.right_slot[e]);
@@ -255,40 +264,50 @@ void FiniteVolumeSolver::deck_fluxes() const {
 //   - sum_k l_k g/2 (h_k + h_i)(z_k - z_i) n_k     (h_k, z_k: the cell's own edge values),
 // and Coriolis f (hv, -hu), wind, body reactions; divided by the area. The largest wave speed
 // at its edges gives its Courant step (model.md (M-16)).
+FiniteVolumeSolver::EdgeRate FiniteVolumeSolver::edge_rate(int i, int k) const {
+  const CellMesh& c = cells_;
+  const int e = c.cell_edges[i][k];
+  const bool left = c.cell_is_left[i][k];
+  const double sign = left ? 1.0 : -1.0, l = c.length[e];
+  const Vec2 n = sign * c.normal[e];
+  const FaceState F = face_value(field_, i, k);
+  const double side =
+      (left ? side_left_[e] : side_right_[e]) + 0.5 * g_ * (F.h + field_.h[i]) * (F.z - z_[i]);
+  return {-sign * l * flux_mass_[e], -l * (sign * flux_x_[e] + side * n.x()),
+          -l * (sign * flux_y_[e] + side * n.y())};
+}
+
+// Coriolis f (hv, -hu) and wind where the cell is wet, and the bodies' reactions [m^2/s^2],
+// added to the momentum rates (ru, rv).
+void FiniteVolumeSolver::add_local_rate(int i, double h, double hu, double hv, double& ru,
+                                        double& rv) const {
+  if (h > dry_depth_) {
+    ru += coriolis_ * hv + wind_stress_.x();
+    rv += -coriolis_ * hu + wind_stress_.y();
+  }
+  if (!cell_force_.empty()) {
+    const double rho_A = case_.flow.water_density * cells_.area[i];
+    ru += cell_force_[i].x() / rho_A;
+    rv += cell_force_[i].y() / rho_A;
+  }
+}
+
 void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
   const CellMesh& c = cells_;
-  const double g = g_, f_c = coriolis_, rho = case_.flow.water_density;
-  const bool forces = !cell_force_.empty();
   double dt_min = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt_min)
   for (int i = 0; i < c.cell_count; ++i) {
     double dh = 0.0, dx = 0.0, dy = 0.0, speed = 0.0;
-    const double h_i = field_.h[i], z_i = z_[i];
     for (int k = 0; k < 3; ++k) {
-      const int e = c.cell_edges[i][k];
-      const bool left = c.cell_is_left[i][k];
-      const double sign = left ? 1.0 : -1.0, l = c.length[e];
-      const Vec2 n = sign * c.normal[e];
-      const FaceState F = face_value(field_, i, k);
-      const double side =
-          (left ? side_left_[e] : side_right_[e]) + 0.5 * g * (F.h + h_i) * (F.z - z_i);
-      dh -= sign * l * flux_mass_[e];
-      dx -= l * (sign * flux_x_[e] + side * n.x());
-      dy -= l * (sign * flux_y_[e] + side * n.y());
-      speed = std::max(speed, edge_speed_[e]);
+      const EdgeRate r = edge_rate(i, k);
+      dh += r.h, dx += r.hu, dy += r.hv;
+      speed = std::max(speed, edge_speed_[c.cell_edges[i][k]]);
     }
     const double A = c.area[i];
     rate_h_[i] = dh / A;
     rate_hu_[i] = dx / A;
     rate_hv_[i] = dy / A;
-    if (h_i > dry_depth_) {
-      rate_hu_[i] += f_c * U.hv[i] + wind_stress_.x();
-      rate_hv_[i] += -f_c * U.hu[i] + wind_stress_.y();
-    }
-    if (forces) {
-      rate_hu_[i] += cell_force_[i].x() / (rho * A);
-      rate_hv_[i] += cell_force_[i].y() / (rho * A);
-    }
+    add_local_rate(i, field_.h[i], U.hu[i], U.hv[i], rate_hu_[i], rate_hv_[i]);
     if (speed > 0.0) dt_min = std::min(dt_min, c.length_scale[i] / speed);
   }
   stage_courant_step_ = case_.flow.fv.courant * dt_min;
@@ -310,7 +329,7 @@ SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 di
 void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
   load_cells(U);
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
-  compute_edge_fluxes(t);
+  compute_edge_fluxes(all_edges_, cells_.boundary_edges, t, {});
   sum_cell_rates(U);
 }
 
@@ -324,18 +343,20 @@ void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
 // whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
 void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   if (friction_.law == FrictionLaw::none) return;
-  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < cells_.cell_count; ++i) {
-    const double h = U.h[i];
-    if (h <= 0.0) continue;
-    const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
-    const double speed = std::sqrt(u * u + v * v);
-    const double gamma = friction_.rate(speed, h, friction_coefficient_[i]);  // [1/s]
-    const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * gamma));
-    U.hu[i] *= factor;
-    U.hv[i] *= factor;
-  }
+  for (int i = 0; i < cells_.cell_count; ++i) apply_friction(U, i, dt);
+}
+
+void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) const {
+  const double h = U.h[i];
+  if (h <= 0.0) return;
+  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
+  const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
+  const double speed = std::sqrt(u * u + v * v);
+  const double gamma = friction_.rate(speed, h, friction_coefficient_[i]);  // [1/s]
+  const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * gamma));
+  U.hu[i] *= factor;
+  U.hv[i] *= factor;
 }
 
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
@@ -391,6 +412,7 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // hydrographs' volume, and since R >= 0 it never makes a depth negative.
 // Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
+  if (case_.flow.fv.time_levels > 1) return advance_local(dt);
   const double t_end = U_.time + dt;
   U1_.h.resize(U_.h.size());
   U1_.hu.resize(U_.h.size());
@@ -414,6 +436,7 @@ void FiniteVolumeSolver::advance(double dt) {
     if (bad >= 0) {
       balance_ = balance_before;
       ++stats_.rejected;
+      stats_.cell_updates += cells_.cell_count;
       shrink *= 0.5;
       if (shrink < 1.0 / 64.0) fail_at(U1_, bad, t + h);
       continue;
@@ -426,6 +449,7 @@ void FiniteVolumeSolver::advance(double dt) {
     U_.time = h == t_end - t ? t_end : t + h;
     shrink = 1.0;
     ++stats_.count;
+    stats_.cell_updates += cells_.cell_count;
     stats_.total += h;
     if (std::isfinite(dt_courant) && (stats_.smallest == 0.0 || dt_courant < stats_.smallest))
       stats_.smallest = dt_courant;

@@ -26,6 +26,7 @@
 #include "flow/fv/fv_boundary.hpp"
 #include "flow/fv/rain_source.hpp"
 #include "flow/fv/reconstruction.hpp"
+#include "flow/fv/time_levels.hpp"
 #include "flow/water_balance.hpp"
 #include "io/case.hpp"
 #include "mesh/mesh.hpp"
@@ -47,10 +48,11 @@ struct SectionFlux {
 
 /// What the sub-steps of the run so far did (the end-of-run summary).
 struct SubStepStats {
-  long count = 0;         // sub-steps taken
-  long rejected = 0;      // sub-steps retried at half the step (a negative depth)
-  double smallest = 0.0;  // [s] smallest Courant step (0: none yet)
-  double total = 0.0;     // [s] time covered by Courant-limited sub-steps
+  long count = 0;             // sub-steps taken
+  long rejected = 0;          // sub-steps retried at half the step (a negative depth)
+  double smallest = 0.0;      // [s] smallest Courant step (0: none yet)
+  double total = 0.0;         // [s] time covered by Courant-limited sub-steps
+  double cell_updates = 0.0;  // cells advanced one step, summed (retried steps too)
 };
 
 class FiniteVolumeSolver {
@@ -113,14 +115,41 @@ class FiniteVolumeSolver {
   double dry_depth() const { return dry_depth_; }  // [m]
 
  private:
+  /// The time levels of L's part being evaluated (local time stepping): all by default.
+  struct LevelRange {
+    int lo = 0, hi = 1 << 30;
+    bool holds(const TimeLevels* t, int edge) const {
+      return !t || (t->edge_level[edge] >= lo && t->edge_level[edge] <= hi);
+    }
+  };
+  /// What edge k of cell i adds to the cell's d(A U)/dt [m^3/s, m^4/s^2] (sum_cell_rates).
+  struct EdgeRate {
+    double h, hu, hv;
+  };
+
   /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
   void evaluate(const ConservedState& U, double t) const;
-  void compute_edge_fluxes(double t) const;
-  void deck_fluxes() const;  // the edges under bridge decks (deck_flux.hpp)
+  void compute_edge_fluxes(std::span<const int> edges, std::span<const int> boundary_edges,
+                           double t, LevelRange levels) const;
+  void deck_fluxes(LevelRange levels) const;  // the edges under bridge decks (deck_flux.hpp)
+  EdgeRate edge_rate(int i, int k) const;
+  void add_local_rate(int i, double h, double hu, double hv, double& ru, double& rv) const;
+  void load_cell(int i, double h, double hu, double hv) const;
+  void apply_friction(ConservedState& U, int i, double dt) const;
   void sum_cell_rates(const ConservedState& U) const;
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
+  // Local time stepping (local_time_steps.cpp).
+  void advance_local(double dt);
+  std::vector<std::vector<int>> tied_cells() const;
+  void choose_levels(double dt0, int cap);
+  int local_cycle(double t0, double dt0);
+  void evaluate_part(const EdgeSet& part, double t, LevelRange levels, bool first_stage);
+  void take_shares(std::span<const int> edges, std::span<const int> boundary_edges,
+                   bool first_stage);
+  void start_steps(const std::vector<int>& cells, double t);
+  int finish_steps(const std::vector<int>& cells, double t_end);
   void apply_infiltration(ConservedState& U, double dt);
   void load_cells(const ConservedState& U) const;  // desingularised velocities into field_
   int clamp_round_off(ConservedState& U, double weight);
@@ -163,6 +192,22 @@ class FiniteVolumeSolver {
   mutable std::vector<double> outflow_rate_;                // [m^3/s] per mesh group, this stage
   WaterBalance balance_;
   SubStepStats stats_;
+  // Local time stepping: every edge, the cells that share a level, this cycle's levels; per
+  // cell its step's start [s] and the rain and sources' rate [m/s] over it; per cell and local
+  // edge, what the edge's last evaluation gives the cell (EdgeRate) and the sum of those over the
+  // cell's step times their weights [m^3, m^4/s].
+  std::vector<int> all_edges_;
+  std::vector<std::vector<int>> level_ties_;
+  TimeLevels full_levels_, capped_levels_;  // this cycle's, and those capped for a last one
+  const TimeLevels* levels_ = nullptr;      // the cycle's: one of those
+  std::vector<int> raw_levels_;             // what the Courant steps allowed, as last built
+  std::vector<char> levels_dry_;            // dry_ as last built
+  int levels_cap_ = -1, full_version_ = 0, capped_from_ = -1;
+  std::vector<double> cell_step_, step_start_, feed_;
+  std::vector<double> level_step_;  // [s] 2^m dt0 per level m, this cycle
+  std::vector<char> dry_;           // per cell, at the cycle's start
+  std::vector<double> side_h_, side_hu_, side_hv_;
+  std::vector<double> sum_h_, sum_hu_, sum_hv_;
 };
 
 }  // namespace flotsam

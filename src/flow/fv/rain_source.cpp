@@ -83,19 +83,7 @@ double RainSource::infiltrate(std::vector<double>& h, std::vector<double>& hu,
   const int n = static_cast<int>(h.size());
   infiltrated_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
-    const double h_old = h[i];
-    if (h_old <= loss) {
-      h[i] = hu[i] = hv[i] = 0.0;
-      infiltrated_[i] = h_old;
-      continue;
-    }
-    h[i] = h_old - loss;
-    const double keep = h[i] / h_old;
-    hu[i] *= keep;
-    hv[i] *= keep;
-    infiltrated_[i] = h_old - h[i];  // what the cell lost, as stored
-  }
+  for (int i = 0; i < n; ++i) infiltrated_[i] = infiltrate_cell(h[i], hu[i], hv[i], loss);
   double volume = 0.0;  // [m^3]
   for (int i = 0; i < n; ++i) volume += area_[i] * infiltrated_[i];
   return volume;

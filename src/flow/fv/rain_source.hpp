@@ -25,6 +25,20 @@ class RainSource {
 
   bool raining() const { return enabled_; }
   bool infiltrating() const { return f_ > 0.0; }
+  /// One cell's loss of `loss` [m] (all its water when it has less), the discharges in
+  /// proportion; returns the depth it lost, as stored [m].
+  static double infiltrate_cell(double& h, double& hu, double& hv, double loss) {
+    const double h_old = h;
+    if (h_old <= loss) {
+      h = hu = hv = 0.0;
+      return h_old;
+    }
+    h = h_old - loss;
+    const double keep = h / h_old;
+    hu *= keep;
+    hv *= keep;
+    return h_old - h;
+  }
 
   /// Sets the weight w_i [-] of each cell (one per cell, finite and >= 0; a programming error
   /// otherwise).

@@ -12,6 +12,7 @@
 //             neighbours out of eta's and the velocity's gradients, so a shoreline does not tilt
 //             the surface of a lake at rest (eta of a dry cell is its bed).
 //   order 1:  all gradients are zero.
+#include <span>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -32,5 +33,8 @@ struct CellField {
 
 /// Fills `field`'s gradients and edge values from its cell values h, eta, u, v.
 void reconstruct(const CellMesh& cells, int order, double dry_depth, CellField& field);
+/// The same for `cells` only (local time stepping: the cells whose edges are evaluated).
+void reconstruct(const CellMesh& cells, int order, double dry_depth, CellField& field,
+                 std::span<const int> cells_to_do);
 
 }  // namespace flotsam

@@ -1,0 +1,46 @@
+#pragma once
+// Local time stepping's levels (docs/model.md "Local time stepping"): over a cycle of 2^top
+// steps dt0, cell i advances in steps of 2^m_i dt0, m_i the largest level its Courant step
+// allows, rising by at most one level every `width` cells (so a coarse cell always borders
+// cells that advance at most twice as often), and the same level for cells tied together (the cells
+// of one discharge boundary, which share the discharge; the cells of the sources). An edge advances
+// with the finer of its two cells.
+#include <span>
+#include <vector>
+
+#include "flow/fv/cell_mesh.hpp"
+
+namespace flotsam {
+
+/// A part of the operator L: the edges whose fluxes are computed, the cells whose
+/// reconstruction those fluxes read (the edges' cells) and the cells whose values that
+/// reconstruction reads (those and their neighbours).
+struct EdgeSet {
+  std::vector<int> edges;
+  std::vector<int> boundary_edges;  // those of `edges` on the boundary, in order
+  std::vector<int> cells;
+  std::vector<int> loaded;
+};
+
+struct TimeLevels {
+  int top = 0;                  // the highest level of any cell
+  std::vector<int> cell_level;  // [-] per cell, 0..top
+  std::vector<int> edge_level;  // [-] per edge: the smaller of its cells' (its one cell's)
+  std::vector<std::vector<int>> cells_upto;  // [a]: the cells of level <= a
+  std::vector<EdgeSet> upto;                 // [a]: the edges of level <= a
+  std::vector<EdgeSet> at;                   // [e]: the edges of level e
+};
+
+/// The cells' levels from the largest each Courant step allows, `raw` (0..cap): lowered so
+/// that a level rises at most once every `width` cells away from a lower one; `ties`: groups of
+/// cells that take one level, the smallest among them; `dry` (per cell, 1 when dry): the two rings
+/// of dry cells ahead of a shoreline take its level, so a front advancing into them finds them
+/// stepping as often as the water behind it.
+std::vector<int> cell_levels(const CellMesh& cells, std::vector<int> raw, int cap,
+                             const std::vector<std::vector<int>>& ties, std::span<const char> dry,
+                             int width);
+
+/// The edges' levels and the parts of L for the cells' `levels`.
+TimeLevels build_time_levels(const CellMesh& cells, std::vector<int> levels);
+
+}  // namespace flotsam
