@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "../support/fv_cases.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "../support/island_channel.hpp"
 
 namespace flotsam {
 namespace {
@@ -20,24 +20,12 @@ constexpr double eta0 = 1.0;  // [m]
 
 TEST(FvLakeAtRestWithIsland, StaysAtRestFor1000SubSteps) {
   const test::Stopwatch clock;
-  ChannelGeometry channel;  // 100 m x 40 m, two piers of radius 3 m across the middle
-  channel.length = 100.0;
-  channel.width = 40.0;
-  channel.piers = {{Vec2(50.0, 13.0), 3.0}, {Vec2(50.0, 27.0), 3.0}};
-  channel.mesh_size = 3.0;
-  channel.pier_mesh_size = 1.5;
-  channel.refine_distance = 10.0;
-  const Mesh mesh = build_mesh(generate_channel_mesh(channel));
+  const Mesh& mesh = test::island_channel_mesh();
   Case c = test::fv_case({"bank_right", "bank_left", "pier_1", "pier_2"});
   for (const char* group : {"inflow", "outflow"})
     c.flow.boundaries.push_back(
         {BoundaryCondition::Kind::elevation, group, TimeSeries(eta0), TimeSeries(0.0)});
-  // Bumps up to 0.7 m under water, and an island rising to 1.6 m above the bed around it.
-  c.bed.kind = BedConfig::Kind::expression;
-  c.bed.expression = Expression(
-      "0.3 * sin(0.2 * x) * cos(0.25 * y) + 0.4 * exp(-((x - 30)^2 + (y - 20)^2) / 20)"
-      " + 1.6 * exp(-((x - 75)^2 + (y - 20)^2) / 60)",
-      "bumpy bed with an island");
+  test::set_island_bed(c);  // bumps up to 0.7 m under water, an island 1.6 m above
   c.flow.initial_eta_start = c.flow.initial_eta_end = eta0;
   FvEngine engine(mesh, c);
   engine.initialize();

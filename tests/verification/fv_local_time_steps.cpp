@@ -15,34 +15,16 @@
 #include <cstdio>
 
 #include "../support/fv_cases.hpp"
-#include "mesh/mesh_generator.hpp"
+#include "../support/island_channel.hpp"
 
 namespace flotsam {
 namespace {
 
 constexpr double eta0 = 1.0;  // [m]
 
-const Mesh& graded_channel() {
-  static const Mesh mesh = [] {
-    ChannelGeometry channel;
-    channel.length = 100.0;
-    channel.width = 40.0;
-    channel.piers = {{Vec2(50.0, 13.0), 3.0}, {Vec2(50.0, 27.0), 3.0}};
-    channel.mesh_size = 3.0;
-    channel.pier_mesh_size = 1.5;
-    channel.refine_distance = 10.0;
-    return build_mesh(generate_channel_mesh(channel));
-  }();
-  return mesh;
-}
-
 Case channel_case(int levels, const char* eta) {
   Case c = test::fv_case({"bank_right", "bank_left", "pier_1", "pier_2", "inflow", "outflow"});
-  c.bed.kind = BedConfig::Kind::expression;
-  c.bed.expression = Expression(
-      "0.3 * sin(0.2 * x) * cos(0.25 * y) + 0.4 * exp(-((x - 30)^2 + (y - 20)^2) / 20)"
-      " + 1.6 * exp(-((x - 75)^2 + (y - 20)^2) / 60)",
-      "bumpy bed with an island");
+  test::set_island_bed(c);
   c.flow.initial_eta = Expression(eta, "initial surface");
   c.flow.fv.time_levels = levels;
   return c;
@@ -59,7 +41,7 @@ LevelsRun run(int levels, const char* eta, double end, int threads) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   const Case c = channel_case(levels, eta);
-  FvEngine engine(graded_channel(), c);
+  FvEngine engine(test::island_channel_mesh(), c);
   engine.initialize();
   const FiniteVolumeSolver& solver = engine.solver();
   const double V0 = solver.volume();
@@ -73,7 +55,7 @@ TEST(FvLocalTimeSteps, LakeAtRestStaysAtRestWithFourLevels) {
   const test::Stopwatch clock;
   const LevelsRun r = run(4, "1", 100.0, 2);
   const Case c = channel_case(4, "1");
-  FvEngine engine(graded_channel(), c);
+  FvEngine engine(test::island_channel_mesh(), c);
   engine.initialize();
   const std::vector<double> h0 = engine.solver().state().h;
   const std::vector<double>& z = engine.solver().bed();

@@ -230,10 +230,14 @@ std::string FvEngine::summary() const {
                                   : std::string("no Courant limit (the water was dry and still)");
   // The work done, whatever the machine: one cell advanced one step (a retried one too).
   const double updates = s.cell_updates;
+  // Local time stepping: the sub-steps are those of the finest cells (docs/model.md).
+  const int levels = case_.flow.fv.time_levels;
+  const std::string finest =
+      levels > 1 ? fmt::format(" of the finest of {} time levels", levels) : "";
   return fmt::format(
-             "finite volumes   {} cells, {} sub-steps ({} retried at half the step), {:.4g} cell "
+             "finite volumes   {} cells, {} sub-steps{} ({} retried at half the step), {:.4g} cell "
              "updates, {}; wet (deeper than {:g} m) {:.1f} % of the area\n",
-             solver_.cells().cell_count, s.count, s.rejected, updates, courant,
+             solver_.cells().cell_count, s.count, finest, s.rejected, updates, courant,
              case_.output.wet_depth, 100.0 * solver_.wet_fraction()) +
          hazard_summary();
 }

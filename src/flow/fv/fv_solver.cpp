@@ -67,6 +67,8 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   level_ties_ = tied_cells();
   all_edges_.resize(m);
   for (int e = 0; e < m; ++e) all_edges_[e] = e;
+  all_cells_.resize(n);
+  for (int i = 0; i < n; ++i) all_cells_[i] = i;
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
   deck_edges_ = find_deck_edges(cells_, flow_case.bridges);
   if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
@@ -259,11 +261,9 @@ void FiniteVolumeSolver::deck_fluxes(LevelRange levels) const {
   }
 }
 
-// Per cell: minus the sum of the fluxes out through its edges, the bed-slope source of the
-// second-order scheme (Audusse et al. 2004, centred part),
-//   - sum_k l_k g/2 (h_k + h_i)(z_k - z_i) n_k     (h_k, z_k: the cell's own edge values),
-// and Coriolis f (hv, -hu), wind, body reactions; divided by the area. The largest wave speed
-// at its edges gives its Courant step (model.md (M-16)).
+// What edge k gives cell i: minus the flux out through it, with the edge's share of the
+// bed-slope source of the second-order scheme (Audusse et al. 2004, centred part),
+//   - l_k g/2 (h_k + h_i)(z_k - z_i) n_k     (h_k, z_k: the cell's own edge values).
 FiniteVolumeSolver::EdgeRate FiniteVolumeSolver::edge_rate(int i, int k) const {
   const CellMesh& c = cells_;
   const int e = c.cell_edges[i][k];
@@ -292,6 +292,8 @@ void FiniteVolumeSolver::add_local_rate(int i, double h, double hu, double hv, d
   }
 }
 
+// Per cell: the sum of its edges' rates, divided by the area, and Coriolis, wind, body
+// reactions. The largest wave speed at its edges gives its Courant step (model.md (M-16)).
 void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
   const CellMesh& c = cells_;
   double dt_min = std::numeric_limits<double>::infinity();
@@ -427,11 +429,11 @@ void FiniteVolumeSolver::advance(double dt) {
     const double h = shrink * std::min(dt_courant, t_end - t);
     rain_depth_ = rain_.depth(t, t + h);
     const double source_volume = sources_.any() ? sources_.depths(t, t + h, source_depth_) : 0.0;
-    int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5) : -1;
+    int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5, all_cells_) : -1;
     // Stage 2: U^{n+1} = (U + U1 + dt L(U1) + R) / 2, then infiltration and friction.
     if (bad < 0) {
       evaluate(U1_, t + h);
-      if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0);
+      if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0, all_cells_);
     }
     if (bad >= 0) {
       balance_ = balance_before;
@@ -463,8 +465,9 @@ void FiniteVolumeSolver::advance(double dt) {
 // volume this adds to the sub-step's result (`weight` of it: half for the first stage) is
 // counted as a source, so the balance stays exact. Returns a cell whose depth is more negative,
 // or whose state is not finite, or -1.
-int FiniteVolumeSolver::clamp_round_off(ConservedState& U, double weight) {
-  for (int i = 0; i < cells_.cell_count; ++i) {
+int FiniteVolumeSolver::clamp_round_off(ConservedState& U, double weight,
+                                        std::span<const int> cells) {
+  for (int i : cells) {
     const double h = U.h[i];
     if (h >= 0.0 && std::isfinite(U.hu[i]) && std::isfinite(U.hv[i])) continue;
     if (!(h >= -negative_depth_round_off) || !std::isfinite(U.hu[i]) || !std::isfinite(U.hv[i]))

@@ -152,7 +152,7 @@ class FiniteVolumeSolver {
   int finish_steps(const std::vector<int>& cells, double t_end);
   void apply_infiltration(ConservedState& U, double dt);
   void load_cells(const ConservedState& U) const;  // desingularised velocities into field_
-  int clamp_round_off(ConservedState& U, double weight);
+  int clamp_round_off(ConservedState& U, double weight, std::span<const int> cells);
   [[noreturn]] void fail_at(const ConservedState& U, int cell, double t) const;
   void check(const ConservedState& U) const;
 
@@ -196,13 +196,13 @@ class FiniteVolumeSolver {
   // cell its step's start [s] and the rain and sources' rate [m/s] over it; per cell and local
   // edge, what the edge's last evaluation gives the cell (EdgeRate) and the sum of those over the
   // cell's step times their weights [m^3, m^4/s].
-  std::vector<int> all_edges_;
+  std::vector<int> all_cells_, all_edges_;
   std::vector<std::vector<int>> level_ties_;
   TimeLevels full_levels_, capped_levels_;  // this cycle's, and those capped for a last one
   const TimeLevels* levels_ = nullptr;      // the cycle's: one of those
   std::vector<int> raw_levels_;             // what the Courant steps allowed, as last built
   std::vector<char> levels_dry_;            // dry_ as last built
-  int levels_cap_ = -1, full_version_ = 0, capped_from_ = -1;
+  int full_version_ = 0, capped_from_ = -1;
   std::vector<double> cell_step_, step_start_, feed_;
   std::vector<double> level_step_;  // [s] 2^m dt0 per level m, this cycle
   std::vector<char> dry_;           // per cell, at the cycle's start

@@ -26,7 +26,6 @@
 namespace flotsam {
 
 namespace {
-constexpr double negative_depth_round_off = 1e-10;  // [m] as in fv_solver.cpp
 // A level rises at most once every two cells away from a finer one. With one cell, four levels
 // let Stoker's shock, running from fine cells into the coarser still water, overshoot: the
 // envelope's largest depth +2.08 % against +1.32 % with one level (tolerance 2 %); with two
@@ -90,7 +89,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
     a->assign(3 * static_cast<std::size_t>(n), 0.0);
   if (sources_.any()) source_depth_.assign(n, 0.0);
   const int cap = case_.flow.fv.time_levels - 1;
-  if (cap != levels_cap_) raw_levels_.clear(), levels_cap_ = cap;
+  raw_levels_.clear();  // each step chooses from its own start: a restart continues bit for bit
   double shrink = 1.0;  // [-] of every cell's Courant step, halved at each retry
   while (U_.time < t_end - 1e-12 * dt) {
     const double t = U_.time, left = t_end - t;
@@ -181,8 +180,8 @@ int FiniteVolumeSolver::local_cycle(double t0, double dt0) {
   return -1;
 }
 
-// L on `part` at time t: every cell's predicted state, the reconstruction, the fluxes, and each
-// edge's shares for its two cells into side_*.
+// L on `part` at time t: the cells' states on their predicted lines, the reconstruction, the
+// fluxes, and the edges' shares (take_shares).
 void FiniteVolumeSolver::evaluate_part(const EdgeSet& part, double t, LevelRange levels,
                                        bool first_stage) {
   const auto loaded = static_cast<std::ptrdiff_t>(part.loaded.size());
@@ -227,8 +226,8 @@ void FiniteVolumeSolver::take_shares(std::span<const int> part_edges,
   }
 }
 
-// The cells of `cells` start a step at t: their rate from the shares just evaluated, the rain
-// and sources over their step, and their predictor checked.
+// The cells of `cells` start a step at t: their rate from the shares just evaluated (side_*),
+// and the rain and sources over their step.
 void FiniteVolumeSolver::start_steps(const std::vector<int>& cells, double t) {
   const int top = levels_->top;
   std::vector<double> rain(top + 1, 0.0);  // [m] per level, on a cell of weight 1
@@ -264,7 +263,6 @@ void FiniteVolumeSolver::start_steps(const std::vector<int>& cells, double t) {
 // or -1.
 int FiniteVolumeSolver::finish_steps(const std::vector<int>& cells, double t_end) {
   const auto count = static_cast<std::ptrdiff_t>(cells.size());
-  int bad = std::numeric_limits<int>::max();
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
@@ -285,18 +283,10 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& cells, double t_end
     step_start_[i] = t_end;
     suspect = suspect || !(U1_.h[i] >= 0.0) || !std::isfinite(U1_.hu[i] + U1_.hv[i]);
   }
-  if (suspect)
-    for (int i : cells) {
-      const double h = U1_.h[i];
-      if (h >= 0.0 && std::isfinite(U1_.hu[i]) && std::isfinite(U1_.hv[i])) continue;
-      if (!(h >= -negative_depth_round_off) || !std::isfinite(U1_.hu[i] + U1_.hv[i]))
-        bad = std::min(bad, i);
-      else {
-        balance_.source -= h * cells_.area[i];
-        U1_.h[i] = U1_.hu[i] = U1_.hv[i] = 0.0;
-      }
-    }
-  if (bad != std::numeric_limits<int>::max()) return bad;
+  if (suspect) {
+    const int bad = clamp_round_off(U1_, 1.0, cells);
+    if (bad >= 0) return bad;
+  }
   if (rain_.infiltrating()) {
     const double f = rain_.infiltration_rate();
     for (int i : cells)  // in the cells' order: the balance's sum
