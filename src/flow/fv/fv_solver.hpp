@@ -192,10 +192,11 @@ class FiniteVolumeSolver {
   mutable std::vector<double> outflow_rate_;                // [m^3/s] per mesh group, this stage
   WaterBalance balance_;
   SubStepStats stats_;
-  // Local time stepping: every edge, the cells that share a level, this cycle's levels; per
-  // cell its step's start [s] and the rain and sources' rate [m/s] over it; per cell and local
-  // edge, what the edge's last evaluation gives the cell (EdgeRate) and the sum of those over the
-  // cell's step times their weights [m^3, m^4/s].
+  // Every cell and every edge (the whole mesh as one part). Local time stepping: the cells that
+  // share a level, this cycle's levels; per cell its Courant step [s], its step's start [s] and
+  // the rain and sources' rate [m/s] over it; per cell and local edge, what the edge gave the cell
+  // at the cell's first stage (EdgeRate, side_*) and the sum of the edge's evaluations over the
+  // cell's step times their weights (sum_*) [m^3, m^4/s].
   std::vector<int> all_cells_, all_edges_;
   std::vector<std::vector<int>> level_ties_;
   TimeLevels full_levels_, capped_levels_;  // this cycle's, and those capped for a last one
