@@ -64,7 +64,7 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   if (sources_.any()) source_depth_.assign(n, 0.0);
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
-  level_ties_ = tied_cells();
+  if (flow.fv.time_levels > 1) level_ties_ = tied_cells();
   all_edges_.resize(m);
   for (int e = 0; e < m; ++e) all_edges_[e] = e;
   all_cells_.resize(n);
@@ -329,10 +329,14 @@ SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 di
 }
 
 void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
+  evaluate_fluxes(U, t);
+  sum_cell_rates(U);
+}
+
+void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) const {
   load_cells(U);
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
   compute_edge_fluxes(all_edges_, cells_.boundary_edges, t, {});
-  sum_cell_rates(U);
 }
 
 // (M-14) friction, backward Euler in the velocity: u^{n+1} = u* - dt c_f |u^{n+1}| u^{n+1} / H,

@@ -129,6 +129,8 @@ class FiniteVolumeSolver {
 
   /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
   void evaluate(const ConservedState& U, double t) const;
+  /// Its edge fluxes only (every edge, at U): what local time stepping starts a cycle with.
+  void evaluate_fluxes(const ConservedState& U, double t) const;
   void compute_edge_fluxes(std::span<const int> edges, std::span<const int> boundary_edges,
                            double t, LevelRange levels) const;
   void deck_fluxes(LevelRange levels) const;  // the edges under bridge decks (deck_flux.hpp)

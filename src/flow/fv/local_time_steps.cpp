@@ -16,6 +16,7 @@
 // Every loop writes each cell or each (cell, edge) from one place and the balance is summed in
 // a fixed order, so the result does not depend on the number of threads.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -95,9 +96,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
     const double t = U_.time, left = t_end - t;
     const WaterBalance balance_before = balance_;
     // Every cell starts at t: L(U) everywhere gives the Courant step of each (model.md (M-16)).
-    load_cells(U_);
-    reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
-    compute_edge_fluxes(all_edges_, cells_.boundary_edges, t, {});
+    evaluate_fluxes(U_, t);
     const double courant = case_.flow.fv.courant;
     double dt_courant = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt_courant)
@@ -230,12 +229,14 @@ void FiniteVolumeSolver::take_shares(std::span<const int> part_edges,
 // and the rain and sources over their step.
 void FiniteVolumeSolver::start_steps(const std::vector<int>& cells, double t) {
   const int top = levels_->top;
-  std::vector<double> rain(top + 1, 0.0);  // [m] per level, on a cell of weight 1
-  for (int m = 0; m <= top; ++m) rain[m] = rain_.depth(t, t + level_step_[m]);
+  std::array<double, 8> rain{};  // [m] per level (time_levels <= 8), on a cell of weight 1
   const std::vector<double>& w = rain_.weights();
-  double rain_volume = 0.0;  // [m^3], in the cells' order
-  for (int i : cells) rain_volume += rain[levels_->cell_level[i]] * w[i] * cells_.area[i];
-  balance_.rain += rain_volume;
+  if (rain_.raining()) {
+    for (int m = 0; m <= top; ++m) rain[m] = rain_.depth(t, t + level_step_[m]);
+    double rain_volume = 0.0;  // [m^3], in the cells' order
+    for (int i : cells) rain_volume += rain[levels_->cell_level[i]] * w[i] * cells_.area[i];
+    balance_.rain += rain_volume;
+  }
   if (sources_.any()) {  // their cells share one level (tied_cells)
     const int m = levels_->cell_level[sources_.cells(0).front()];
     if (std::binary_search(cells.begin(), cells.end(), sources_.cells(0).front()))

@@ -35,13 +35,19 @@ std::vector<int> distances(const CellMesh& c, int from) {
   return d;
 }
 
-TEST(TimeLevels, RiseByOneLevelPerCellAwayFromTheFinest) {
+constexpr int cap = 3, fine = 40;  // levels 0..3; the one cell at level 0
+
+// The levels of the strip, all wet and untied, when only cell `fine` needs level 0.
+std::vector<int> levels_around_the_fine_cell(int width) {
   const CellMesh& c = strip();
-  const int cap = 3, fine = 40;
   std::vector<int> raw(c.cell_count, cap);
   raw.at(fine) = 0;
-  const std::vector<char> wet(c.cell_count, 0);
-  const TimeLevels t = build_time_levels(c, cell_levels(c, raw, cap, {}, wet, 1));
+  return cell_levels(c, raw, cap, {}, std::vector<char>(c.cell_count, 0), width);
+}
+
+TEST(TimeLevels, RiseByOneLevelPerCellAwayFromTheFinest) {
+  const CellMesh& c = strip();
+  const TimeLevels t = build_time_levels(c, levels_around_the_fine_cell(1));
   const std::vector<int> d = distances(c, fine);
   for (int i = 0; i < c.cell_count; ++i) EXPECT_EQ(t.cell_level[i], std::min(cap, d[i])) << i;
   EXPECT_EQ(t.top, cap);
@@ -74,7 +80,6 @@ TEST(TimeLevels, RiseByOneLevelPerCellAwayFromTheFinest) {
 
 TEST(TimeLevels, TiedCellsTakeTheSmallestLevelAndDryRingsTheShorelines) {
   const CellMesh& c = strip();
-  const int cap = 3;
   std::vector<int> raw(c.cell_count, cap);
   raw.at(10) = 0;
   std::vector<char> dry(c.cell_count, 0);
@@ -92,11 +97,7 @@ TEST(TimeLevels, TiedCellsTakeTheSmallestLevelAndDryRingsTheShorelines) {
 
 TEST(TimeLevels, AWidthOfTwoRaisesALevelEveryTwoCells) {
   const CellMesh& c = strip();
-  const int cap = 3, fine = 40;
-  std::vector<int> raw(c.cell_count, cap);
-  raw.at(fine) = 0;
-  const std::vector<char> wet(c.cell_count, 0);
-  const std::vector<int> level = cell_levels(c, raw, cap, {}, wet, 2);
+  const std::vector<int> level = levels_around_the_fine_cell(2);
   const std::vector<int> d = distances(c, fine);
   for (int i = 0; i < c.cell_count; ++i) EXPECT_EQ(level[i], std::min(cap, d[i] / 2)) << i;
 }
