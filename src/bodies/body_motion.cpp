@@ -30,8 +30,7 @@ void set_body_state(BodySet& bodies, int i, const BodyStateVector& y) {
 }
 
 void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
-                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads,
-                       const Vec2* acceleration) {
+                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads) {
   const double m_p = bodies.mass[i];
   const double m_f = water.m_f;
   const double C_a = model.physics.added_mass_coefficient;
@@ -61,8 +60,7 @@ void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
     loads->drag = water.drag.force;
     loads->fluid = water.fluid;
     loads->bed = F_bed;
-    const Vec2 a_p = acceleration ? *acceleration : du_p_dt;                 // [m/s^2]
-    loads->reaction = water.drag.force + C_a * m_f * (water.Du_f_Dt - a_p);  // spec 5 step 3
+    loads->reaction = water.drag.force + C_a * m_f * (water.Du_f_Dt - du_p_dt);  // spec 5 step 3
     loads->torque = T;
     loads->grounded = !water.floating;
     loads->outside = false;
@@ -71,8 +69,7 @@ void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
 
 BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const BodyStateVector& y,
                                 const FlowField& flow, int& hint, const ForceModel& model,
-                                BodyLoads* loads, const AxisReference* reference,
-                                const Vec2* acceleration) {
+                                BodyLoads* loads, const AxisReference* reference) {
   BodyStateVector dy;
   const Vec2 G = y.head<2>();
   const Vec2 u_p = y.segment<2>(3);
@@ -110,7 +107,7 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
   const Vec2 F_fluid = (1.0 + C_a) * m_f * Du_f_Dt;
   finish_derivative(bodies, i, model,
                     {u_p, omega, floating, m_f, Du_f_Dt, F_fluid, drag, T_rot, at_G.grad_zb}, dy,
-                    loads, acceleration);
+                    loads);
   return dy;
 }
 

@@ -69,20 +69,15 @@ struct WaterLoads {
 
 /// The rest of (M-5) once the water's forces are known: the bed's (spec 3.4) when grounded, then
 /// du_p/dt and domega/dt into dy (its first three components untouched); `loads` (optional)
-/// receives the forces. `acceleration` (optional): the body's actual du_p/dt [m/s^2] for the
-/// added mass's reaction in loads->reaction, where contacts hold it (loads_after_contacts.hpp);
-/// without, (M-5)'s.
+/// receives the forces.
 void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
-                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads,
-                       const Vec2* acceleration = nullptr);
+                       const WaterLoads& water, BodyStateVector& dy, BodyLoads* loads);
 
 /// f(t, y) of (M-5) for body i; `hint` is the element of G (updated); `loads` (optional)
-/// receives the forces; `reference` (optional) speeds up the axis; `acceleration` as for
-/// finish_derivative.
+/// receives the forces; `reference` (optional) speeds up the axis.
 BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const BodyStateVector& y,
                                 const FlowField& flow, int& hint, const ForceModel& model,
                                 BodyLoads* loads = nullptr,
-                                const AxisReference* reference = nullptr,
-                                const Vec2* acceleration = nullptr);
+                                const AxisReference* reference = nullptr);
 
 }  // namespace flotsam

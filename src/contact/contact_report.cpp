@@ -24,19 +24,6 @@ ContactReport make_contact_report(const std::vector<ContactConstraint>& contacts
   return report;
 }
 
-std::vector<int> touching_bodies(const std::vector<ContactConstraint>& contacts, int body_count) {
-  std::vector<char> touching(static_cast<std::size_t>(body_count), 0);
-  for (const ContactConstraint& c : contacts) {
-    if (c.point_count == 0) continue;
-    touching.at(static_cast<std::size_t>(c.a)) = 1;
-    if (c.b >= 0) touching.at(static_cast<std::size_t>(c.b)) = 1;
-  }
-  std::vector<int> list;
-  for (int i = 0; i < body_count; ++i)
-    if (touching[static_cast<std::size_t>(i)]) list.push_back(i);
-  return list;
-}
-
 int ContactReport::count_touching(int group) const {
   return static_cast<int>(std::count_if(body_group.begin(), body_group.end(),
                                         [&](const auto& bg) { return bg.second == group; }));

@@ -25,8 +25,4 @@ struct ContactReport {
 ContactReport make_contact_report(const std::vector<ContactConstraint>& contacts,
                                   const std::vector<int>& segment_groups, int body_count);
 
-/// The bodies of the contacts that have points (touching, or within the contact margin: those
-/// the solve acts on), ascending body indices, each once.
-std::vector<int> touching_bodies(const std::vector<ContactConstraint>& contacts, int body_count);
-
 }  // namespace flotsam

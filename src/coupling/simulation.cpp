@@ -10,7 +10,6 @@
 #include <cmath>
 #include <functional>
 
-#include "bodies/loads_after_contacts.hpp"
 #include "bodies/outflow.hpp"
 #include "bridges/deck_contact.hpp"
 #include "core/error.hpp"
@@ -208,7 +207,6 @@ void Simulation::advance_bodies(double t0, double t1) {
   // RKF45 sub-steps of every body; the bodies that may touch, in contact groups, with their
   // contacts resolved at the end of each of their contact intervals (body_integrator.hpp). The
   // contact solve moves bodies over the interval just integrated (ContactWorld::step).
-  const std::vector<Vec2> start_velocity = bodies_.velocity;  // u_p(t0) [m/s]
   ContactSchedule schedule;
   {
     auto timed = timer_.time(Stage::contacts);
@@ -230,9 +228,6 @@ void Simulation::advance_bodies(double t0, double t1) {
         compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
     set_wetted_heights(bodies_, jams, jam_geometry_, case_.bodies.jams);
   }
-  // What the water feels of the bodies the contacts hold: their loads as the contacts left them.
-  record_loads_after_contacts(bodies_, touching_bodies(contacts_->contacts(), bodies_.size()),
-                              start_velocity, flow_->field(), integrator_->model(), t1, t1 - t0);
   const OutflowResult out = remove_outflowing_bodies(bodies_, flow_->field(), t1, outflow_groups_);
   if (!out.stray.empty()) {
     const int i = out.stray.front();
