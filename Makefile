@@ -19,7 +19,7 @@ PACKAGES := g++ cmake ninja-build ccache pkg-config python3 python3-vtk9 clang-f
             libfmt-dev libspdlog-dev libgtest-dev libgmock-dev libbenchmark-dev libcairo2-dev \
             libmuparser-dev libgdal-dev libopenblas0-openmp time python3-gdal python3-numpy \
             libopenmpi-dev openmpi-bin valgrind clang lld libclang-rt-14-dev libbox2d-dev \
-            libxxhash-dev libnetcdf-dev netcdf-bin python3-netcdf4 python3-xarray
+            libxxhash-dev libnetcdf-dev netcdf-bin python3-netcdf4 python3-xarray libmetis-dev
 
 # QGIS (its Python bindings and MDAL provider, ~620 MB) only for `make test-qgis`.
 QGIS_PACKAGES := python3-qgis

@@ -4,10 +4,6 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-namespace flotsam {
-struct Mesh;
-}
-
 namespace flotsam::cli {
 
 void add_mesh_command(CLI::App& app);
@@ -15,10 +11,6 @@ void add_info_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_ensemble_command(CLI::App& app);
-
-/// The mesh that `path` gives: a Gmsh .msh file is read; a case file (.yaml/.yml) has its mesh
-/// read or generated.
-Mesh load_mesh_from(const std::string& path);
 
 /// Refuses to replace an existing file unless `overwrite` (nothing the user wrote is lost
 /// without asking).

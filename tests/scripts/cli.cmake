@@ -20,6 +20,11 @@ flotsam_cli_test(mesh_paper_channel 0 "wrote bridge.msh"
 flotsam_cli_test(info_paper_channel 0 "pier_1" info bridge.msh)
 set_tests_properties(cli.mesh_paper_channel PROPERTIES FIXTURES_SETUP cli_mesh)
 set_tests_properties(cli.info_paper_channel PROPERTIES FIXTURES_REQUIRED cli_mesh)
+# The cells in four parts for four ranks (flow/fv/partition.hpp): the report's four lines.
+flotsam_cli_test(info_parts 0
+                 "parts +4 .METIS.*\n  cells +[0-9]+ / [0-9]+ / [0-9]+\n  halo cells +[0-9]+ / [0-9]+ / [0-9]+ .*\n  neighbours +[1-3] / [0-9]+ / [1-3] .*\n  cut edges +[0-9]+; imbalance 1.0[0-3]"
+                 info bridge.msh --parts 4)
+set_tests_properties(cli.info_parts PROPERTIES FIXTURES_REQUIRED cli_mesh)
 flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --overwrite"
                  mesh ${examples}/bridge_piers.yaml -o bridge.msh)
 set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)
