@@ -5,7 +5,9 @@
 // eta - H at the wall x = 0 over the run (linear interpolation between steps), and the energy
 //     E = integral of ( H |u|^2 / 2 + g (eta - H)^2 / 2 ) dA,
 // which nothing brings in. Tolerances:
-//  * gravity-wave Courant number 1.6 (T/50), 5 periods: the period within 0.5 % of T;
+//  * gravity-wave Courant number 1.6 (T/50), 5 periods: the period within 0.5 % of T, and the
+//    amplitude left (sqrt of E's ratio) within 1 % of the theta-scheme's own damping of an
+//    oscillator over the run's steps (the only damping of this linear, inviscid mode);
 //  * Courant 5 and 20, 20 and 5 periods (E falls to 1e-4 of its start; below that round-off
 //    takes over): the energy falls at every step (stable: the steps are
 //    implicit in the gravity waves), and the period within 1 % of the theta-scheme's own
@@ -82,13 +84,24 @@ Seiche run_seiche(FlowScheme scheme, double courant, int periods) {
 
 class SeichePeriod : public testing::TestWithParam<FlowScheme> {};
 
-TEST_P(SeichePeriod, IsTheAnalyticPeriod) {
+TEST_P(SeichePeriod, IsTheAnalyticPeriodAndDampsAsTheThetaSchemeDoes) {
   const Seiche s = run_seiche(GetParam(), 1.6, 5);
-  const double T = 2.0 * L / std::sqrt(9.81 * H);  // [s]
-  std::printf("seiche, %s, Courant 1.6: period %.4f s, analytic %.4f s (%+.3f %%), E ratio %.4f\n",
-              test::scheme_name(GetParam()).c_str(), s.period, T, 100 * (s.period / T - 1),
-              s.energy_ratio);
+  const double g = 9.81, T = 2.0 * L / std::sqrt(g * H);  // [s]
+  // The theta-scheme's amplification of an oscillator over one step, |G|^2 =
+  // (1 + (1 - theta)^2 (omega dt)^2) / (1 + theta^2 (omega dt)^2), over the run's steps: the
+  // amplitude left after 5 periods (issue 42 asks 95 % at the default theta = 0.6; the scheme
+  // itself keeps 67.5 % at 50 steps a period and would need theta <= 0.513 for 95 %).
+  const double theta = 0.6, omega = 2.0 * pi / T;                          // [-], [1/s]
+  const double dt = 1.6 * (L / cells) / std::sqrt(g * H), x = omega * dt;  // [s], [-]
+  const double G2 = (1.0 + (1.0 - theta) * (1.0 - theta) * x * x) / (1.0 + theta * theta * x * x);
+  const double kept = std::pow(G2, 0.5 * std::ceil(5.0 * T / dt));  // [-]
+  std::printf(
+      "seiche, %s, Courant 1.6: period %.4f s, analytic %.4f s (%+.3f %%), amplitude kept %.4f, "
+      "theta-scheme's %.4f\n",
+      test::scheme_name(GetParam()).c_str(), s.period, T, 100 * (s.period / T - 1),
+      std::sqrt(s.energy_ratio), kept);
   EXPECT_NEAR(s.period / T, 1.0, 5e-3);
+  EXPECT_NEAR(std::sqrt(s.energy_ratio) / kept, 1.0, 1e-2);
   EXPECT_LT(s.largest_rise, 0.0);
   EXPECT_LE(std::abs(s.balance), 1e-9);
 }
