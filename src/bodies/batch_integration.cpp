@@ -107,9 +107,10 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
                          water.m_f[k],
                          {water.Du_x[k], water.Du_y[k]},
                          {water.fluid_x[k], water.fluid_y[k]},
-                         {{drag.fx[k], drag.fy[k]}, drag.torque[k]},
+                         {{drag.fx[k], drag.fy[k]}, drag.torque[k], drag.rate[k]},
                          water.T_rot[k],
-                         {B.at_G.zb_x[k], B.at_G.zb_y[k]}};
+                         {B.at_G.zb_x[k], B.at_G.zb_y[k]},
+                         {B.at_G.u[k], B.at_G.v[k]}};
       BodyStateVector dy_k;
       finish_derivative(set, B.bodies.index[k], model, w, dy_k, loads ? &loads[k] : nullptr);
       for (int c = 3; c < 6; ++c) dy.c[c][k] = dy_k[c];
@@ -121,6 +122,10 @@ FLOTSAM_INLINE void evaluate(Batch& B, const BodySet& set, const FlowField& flow
         l.drag = {drag.fx[k], drag.fy[k]};
         l.fluid = {water.fluid_x[k], water.fluid_y[k]};
         l.reaction = {water.reaction_x[k], water.reaction_y[k]};
+        l.drag_rate = drag.rate[k];
+        l.added_mass = model.physics.added_mass_coefficient * water.m_f[k];
+        l.fluid_acceleration = {water.Du_x[k], water.Du_y[k]};
+        l.flow_velocity = {B.at_G.u[k], B.at_G.v[k]};
         l.torque = water.torque[k];
       }
     }

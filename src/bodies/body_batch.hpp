@@ -66,6 +66,7 @@ struct alignas(64) BatchVector {
 /// The drag of a batch (force and moment about G), summed over drag points.
 struct alignas(64) BatchDrag {
   alignas(64) Lanes fx = {}, fy = {}, torque = {};
+  alignas(64) Lanes rate = {};  // K [kg/s] (Drag::rate)
 };
 
 /// Adds `fraction` of the drag law (M-6) at the flow `at` (relative to the body's velocity) and
@@ -122,6 +123,7 @@ struct alignas(64) BatchDrag {
     drag.fx[k] += acts ? fx : 0.0;
     drag.fy[k] += acts ? fy : 0.0;
     drag.torque[k] += acts ? torque : 0.0;
+    drag.rate[k] += acts ? scale : 0.0;
   }
 }
 

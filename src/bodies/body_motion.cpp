@@ -61,6 +61,10 @@ void finish_derivative(const BodySet& bodies, int i, const ForceModel& model,
     loads->fluid = water.fluid;
     loads->bed = F_bed;
     loads->reaction = water.drag.force + C_a * m_f * (water.Du_f_Dt - du_p_dt);  // spec 5 step 3
+    loads->drag_rate = water.drag.rate;
+    loads->added_mass = C_a * m_f;
+    loads->fluid_acceleration = water.Du_f_Dt;
+    loads->flow_velocity = water.u_f;
     loads->torque = T;
     loads->grounded = !water.floating;
     loads->outside = false;
@@ -105,9 +109,9 @@ BodyStateVector body_derivative(const BodySet& bodies, int i, double t, const Bo
       rotation_torque(model.rho, model.physics.rotation_coefficient, std::clamp(at_G.H, 0.0, d_w),
                       bodies.length[i], omega, fluid_spin(at_G.grad_u));
   const Vec2 F_fluid = (1.0 + C_a) * m_f * Du_f_Dt;
-  finish_derivative(bodies, i, model,
-                    {u_p, omega, floating, m_f, Du_f_Dt, F_fluid, drag, T_rot, at_G.grad_zb}, dy,
-                    loads);
+  finish_derivative(
+      bodies, i, model,
+      {u_p, omega, floating, m_f, Du_f_Dt, F_fluid, drag, T_rot, at_G.grad_zb, at_G.u}, dy, loads);
   return dy;
 }
 

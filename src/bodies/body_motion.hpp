@@ -27,9 +27,13 @@ struct BodyLoads {
   Vec2 fluid = Vec2::Zero();     // (1 + C_a) m_f Du_f/Dt [N] (M-5)
   Vec2 bed = Vec2::Zero();       // F_bed + F_slope [N] (spec 3.4)
   Vec2 reaction = Vec2::Zero();  // F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt) [N] (spec 5)
-  double torque = 0.0;           // T_drag + T_rot + T_bed [N m]
-  bool grounded = false;         // H(G) <= d, or denser than water
-  bool outside = false;          // G is outside the domain: no forces, the body coasts
+  double drag_rate = 0.0;        // K [kg/s], F_drag = K u_rel (Drag::rate)
+  double added_mass = 0.0;       // C_a m_f [kg]
+  Vec2 fluid_acceleration = Vec2::Zero();  // Du_f/Dt at G [m/s^2]
+  Vec2 flow_velocity = Vec2::Zero();       // u_f at G [m/s]
+  double torque = 0.0;                     // T_drag + T_rot + T_bed [N m]
+  bool grounded = false;                   // H(G) <= d, or denser than water
+  bool outside = false;                    // G is outside the domain: no forces, the body coasts
 };
 
 /// cos d and sin d by their Taylor series to 8th order, for |d| <= 0.05 [rad] (AxisReference).
@@ -65,6 +69,7 @@ struct WaterLoads {
   Drag drag;      // F_drag [N] and T_drag [N m] (M-6, M-7)
   double T_rot;   // rotation resistance (M-8) [N m]
   Vec2 grad_zb;   // bed slope at G [-]
+  Vec2 u_f;       // the flow's velocity at G [m/s]
 };
 
 /// The rest of (M-5) once the water's forces are known: the bed's (spec 3.4) when grounded, then

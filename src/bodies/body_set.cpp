@@ -83,6 +83,12 @@ int BodySet::add(const BodySpec& s) {
   bed_force.push_back(Vec2::Zero());
   reaction_force.push_back(Vec2::Zero());
   torque.push_back(0.0);
+  drag_rate.push_back(0.0);
+  added_mass.push_back(0.0);
+  fluid_acceleration.push_back(Vec2::Zero());
+  flow_velocity.push_back(Vec2::Zero());
+  mean_acceleration.push_back(Vec2::Zero());
+  water_force.push_back(Vec2::Zero());
   return size() - 1;
 }
 

@@ -64,10 +64,20 @@ struct BodySet {
   std::vector<double> step_size;       // RKF45 step proposed for the next sub-step [s], 0: unknown
 
   // Forces at the start of each body's last accepted sub-step (output, two-way coupling).
-  std::vector<Vec2> drag_force;      // F_drag [N] (M-6), summed over drag points
-  std::vector<Vec2> bed_force;       // F_bed + F_slope [N] (spec 3.4), zero when floating
-  std::vector<Vec2> reaction_force;  // F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt) [N] (spec 5)
-  std::vector<double> torque;        // T_drag + T_rot + T_bed [N m] (M-5)
+  std::vector<Vec2> drag_force;          // F_drag [N] (M-6), summed over drag points
+  std::vector<Vec2> bed_force;           // F_bed + F_slope [N] (spec 3.4), zero when floating
+  std::vector<Vec2> reaction_force;      // F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt) [N] (spec 5)
+  std::vector<double> torque;            // T_drag + T_rot + T_bed [N m] (M-5)
+  std::vector<double> drag_rate;         // K [kg/s]: F_drag = K (u_f - u_p) (M-6)
+  std::vector<double> added_mass;        // C_a m_f [kg] (M-5)
+  std::vector<Vec2> fluid_acceleration;  // Du_f/Dt at G [m/s^2]
+  std::vector<Vec2> flow_velocity;       // u_f at G [m/s]
+
+  // Two-way coupling (spec 5; model.md "Two-way coupling").
+  std::vector<Vec2> mean_acceleration;  // (u_p(t1) - u_p(t0)) / (t1 - t0), contacts included,
+                                        // over the last coupling step [m/s^2]
+  std::vector<Vec2> water_force;        // the force the water exchanged with the body over the last
+                                        // flow step, as the flow applied it [N] (on the body)
 
   long outflow_count = 0;  // bodies that left through an outflow boundary (spec 5)
 
@@ -108,6 +118,10 @@ struct BodySet {
     f("element_hint", b.element_hint), f("step_size", b.step_size);
     f("drag_force", b.drag_force), f("bed_force", b.bed_force);
     f("reaction_force", b.reaction_force), f("torque", b.torque);
+    f("drag_rate", b.drag_rate), f("added_mass", b.added_mass);
+    f("fluid_acceleration", b.fluid_acceleration), f("flow_velocity", b.flow_velocity);
+    f("mean_acceleration", b.mean_acceleration);
+    f("water_force", b.water_force);
   }
 };
 

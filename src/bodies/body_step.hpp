@@ -55,6 +55,10 @@ inline void record_loads(BodySet& bodies, int i, const BodyLoads& loads, int hin
   bodies.bed_force[i] = loads.bed;
   bodies.reaction_force[i] = loads.reaction;
   bodies.torque[i] = loads.torque;
+  bodies.drag_rate[i] = loads.drag_rate;
+  bodies.added_mass[i] = loads.added_mass;
+  bodies.fluid_acceleration[i] = loads.fluid_acceleration;
+  bodies.flow_velocity[i] = loads.flow_velocity;
   if (!loads.outside) bodies.state[i] = loads.grounded ? BodyState::grounded : BodyState::floating;
 }
 

@@ -92,7 +92,8 @@ Drag slice_drag(const BodySet& bodies, int i, const BodyPose& pose, const Slice&
       effective_area(bodies.shape[i], bodies.length[i], bodies.width[i], h_s, cos_alpha, sin_alpha);
   const double C_d = drag_coefficient(bodies, i, S_eff, speed, model);
   Drag drag;
-  drag.force = (slice.fraction * 0.5 * model.rho * C_d * S_eff * speed) * u_rel;  // (M-6)
+  drag.rate = slice.fraction * 0.5 * model.rho * C_d * S_eff * speed;  // [kg/s]
+  drag.force = drag.rate * u_rel;                                      // (M-6)
   Vec2 P = slice.point;
   if (model.physics.center_of_pressure) {
     // (M-7): P on the axis, on the side u_rel meets first (upstream: against u_rel).
@@ -124,6 +125,7 @@ Drag drag_on_body(const BodySet& bodies, int i, const BodyPose& pose, double t,
     const Drag d = slice_drag(bodies, i, pose, {x_k, at_k.u - pose.velocity, h_s, 1.0 / N}, model);
     total.force += d.force;
     total.torque += d.torque;
+    total.rate += d.rate;
   }
   return total;
 }

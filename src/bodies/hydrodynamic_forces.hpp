@@ -60,6 +60,7 @@ double rotation_torque(double rho, double C_r, double h_s, double L, double omeg
 struct Drag {
   Vec2 force = Vec2::Zero();  // F_drag [N]
   double torque = 0.0;        // T_drag [N m], z component about G
+  double rate = 0.0;          // K [kg/s]: F_drag = K u_rel slice by slice (M-6), summed
 };
 
 /// Where and how the body is: its pose, its velocity, and the flow sampled at G.

@@ -35,6 +35,17 @@ double closing_speed(const BodySet& b, int i, int j) {
   return rigid.norm() + std::abs(b.angular_velocity[i] - b.angular_velocity[j]) * R;
 }
 
+// The drag [N] at the body's velocity now: the last sub-step's, or, when a contact has since
+// slowed the body against the flow, its law (M-6) at the new relative velocity, K / |u_rel| of
+// the last sub-step times |u_f - u_p|^2: a log just stopped against a deck takes the drag of a
+// body at rest, many times what it felt drifting, and must not cross the step unplanned.
+double drag_now(const BodySet& b, int i) {
+  const double last = b.drag_force[i].norm();  // [N]
+  if (!(b.drag_rate[i] > 0.0) || last == 0.0) return last;
+  const double per_speed_squared = b.drag_rate[i] * b.drag_rate[i] / last;  // [kg/m]
+  return std::max(last, per_speed_squared * (b.flow_velocity[i] - b.velocity[i]).squaredNorm());
+}
+
 // The fewest equal intervals of a step dt in which a pair closing at speed c [m/s] with relative
 // acceleration a [m/s^2] closes by at most a quarter of the thinner width l: within an interval
 // of length h the contacts have stopped nothing yet, so the closing is s (c h + a h^2 / 2), and
@@ -69,7 +80,7 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
                std::hypot(bodies.length[i], bodies.width[i]);            // [m/s] of its corners
     const Vec2 added = bodies.reaction_force[i] - bodies.drag_force[i];  // [N]
     acceleration_[i] =
-        (bodies.drag_force[i].norm() + bodies.bed_force[i].norm() + added.norm()) / bodies.mass[i];
+        (drag_now(bodies, i) + bodies.bed_force[i].norm() + added.norm()) / bodies.mass[i];
     const double margin = 2.0 * config.allowed_overlap * bodies.width[i];  // [m]
     reach_[i] = safety * ((speed_[i] + spin_[i]) * dt + 0.5 * acceleration_[i] * dt * dt);
     const Vec2 grow = Vec2::Constant(reach_[i] + margin);

@@ -157,6 +157,7 @@ void RunOutput::write_bodies(const BodySet& bodies, double t) {
     extra.add_vector("drag [N]", bodies.drag_force);
     extra.add_vector("bed force [N]", bodies.bed_force);
     extra.add_vector("reaction [N]", bodies.reaction_force);
+    extra.add_vector("water force [N]", bodies.water_force);
     extra.add_scalar("torque [N m]", bodies.torque);
     write_bodies_vtp((directory_ / file).string(), bodies, extra, t);
     body_index_.add(t, file);

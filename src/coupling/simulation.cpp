@@ -161,6 +161,7 @@ void Simulation::step() {
   on_chosen_threads([&] {
     advance_flow(t1);
     if (has_bodies_) {
+      take_exchanged_forces();
       advance_bodies(t0, t1);
       hand_bodies_to_flow();
     }
@@ -200,6 +201,7 @@ void Simulation::advance_bodies(double t0, double t1) {
   // The bodies' stage encloses the contacts' (printed as "bodies ... of which contacts ...").
   auto timed_bodies = timer_.time(Stage::bodies);
   releaser_->release(bodies_, flow_->field(), t0, t1);
+  const std::vector<Vec2> start_velocity = bodies_.velocity;  // [m/s]
   if (has_decks_) {  // who passes under a deck, who stops, who floats over (deck_contact.hpp)
     BodyLevels levels = body_levels(bodies_, flow_->field(), t0);
     contacts_->set_body_levels(std::move(levels.bottom), std::move(levels.top));
@@ -228,6 +230,8 @@ void Simulation::advance_bodies(double t0, double t1) {
         compute_jam_statistics(bodies_, contacts_->report(walls_, bodies_.size()), jam_geometry_);
     set_wetted_heights(bodies_, jams, jam_geometry_, case_.bodies.jams);
   }
+  for (int i = 0; i < bodies_.size(); ++i)  // contacts included
+    bodies_.mean_acceleration[i] = (bodies_.velocity[i] - start_velocity[i]) / (t1 - t0);
   const OutflowResult out = remove_outflowing_bodies(bodies_, flow_->field(), t1, outflow_groups_);
   if (!out.stray.empty()) {
     const int i = out.stray.front();
@@ -258,15 +262,31 @@ void Simulation::hand_bodies_to_flow() {
   std::vector<BodyFootprint> footprints;
   std::vector<BodyReaction> reactions;
   const bool two_way = case_.time.mode == CouplingMode::two_way;
+  reaction_bodies_.clear();
   for (int i = 0; i < bodies_.size(); ++i) {
     if (bodies_.state[i] == BodyState::gone) continue;
     footprints.push_back({bodies_.position[i], bodies_.half_extents(i), bodies_.angle[i]});
+    if (!two_way) continue;
     // Spec 5 step 3: the fluid gets -F_x, F_x = F_drag + C_a m_f (Du_f/Dt - du_p/dt), spread
-    // over the footprint; it acts during the next flow step.
-    if (two_way) reactions.push_back({footprints.back(), -bodies_.reaction_force[i]});
+    // over the footprint; it acts during the next flow step. du_p/dt is the body's mean
+    // acceleration over the step, its contacts' included (a body held against a pier does not
+    // accelerate), and the drag goes as its law, K and u_p (model.md "Two-way coupling").
+    const Vec2 added =
+        bodies_.added_mass[i] * (bodies_.fluid_acceleration[i] - bodies_.mean_acceleration[i]);
+    reactions.push_back({footprints.back(), -added, bodies_.drag_force[i], bodies_.drag_rate[i],
+                         bodies_.velocity[i]});
+    reaction_bodies_.push_back(i);
   }
   flow_->mark_debris(footprints);
   if (two_way) flow_->field().set_body_reactions(reactions);
+}
+
+// What the water exchanged with each body over the flow step just taken (Body::water_force).
+void Simulation::take_exchanged_forces() {
+  auto timed = timer_.time(Stage::reaction);
+  const std::vector<Vec2> forces = flow_->field().exchanged_forces();
+  for (std::size_t k = 0; k < forces.size() && k < reaction_bodies_.size(); ++k)
+    bodies_.water_force[reaction_bodies_[k]] = forces[k];
 }
 
 void Simulation::check_diagnostics() {

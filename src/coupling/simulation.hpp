@@ -101,6 +101,7 @@ class Simulation {
   void advance_flow(double t1);
   void advance_bodies(double t0, double t1);
   void hand_bodies_to_flow();
+  void take_exchanged_forces();
   void check_decks_stand_above_the_bed() const;  // InputError for a deck under the ground
   // The grid of the envelopes' rasters over the mesh (output.rasters); an InputError when its
   // pixels would not fit in memory.
@@ -141,6 +142,7 @@ class Simulation {
   std::unique_ptr<ContactWorld> contacts_;
   BoundarySegments walls_;
   std::vector<int> outflow_groups_;
+  std::vector<int> reaction_bodies_;  // the body of each reaction handed to the flow
   JamGeometry jam_geometry_;
   bool has_decks_ = false;  // some bridge has a deck: the contacts need the bodies' levels
   std::unique_ptr<BackwaterProbe> backwater_probe_;

@@ -27,9 +27,14 @@ struct BodyFootprint {
   double angle;       // theta [rad]
 };
 
-/// A body's reaction on the flow (spec 5, two-way): a force F_x [N] applied on its footprint.
+/// A body's reaction on the flow (spec 5, two-way), applied on its footprint: the water takes
+/// -F_x = -F_drag - C_a m_f (Du_f/Dt - du_p/dt). The drag is handed over as its law, so that an
+/// engine may apply it implicitly at the water's own velocity (model.md "Two-way coupling").
 struct BodyReaction : BodyFootprint {
-  Vec2 force;  // - F_x: the force the body exerts on the water [N]
+  Vec2 force;  // -C_a m_f (Du_f/Dt - du_p/dt): the added mass's part, on the water [N]
+  Vec2 drag = Vec2::Zero();      // F_drag = K (u_f - u_p) on the body, at its state now [N]
+  double drag_rate = 0.0;        // K [kg/s]
+  Vec2 velocity = Vec2::Zero();  // u_p [m/s]
 };
 
 struct BatchFlow;  // flow_batch.hpp
@@ -57,6 +62,9 @@ class FlowField {
   /// Body reactions to apply as a source during the next flow step (two-way coupling). Engines
   /// without coupling ignore them.
   virtual void set_body_reactions(const std::vector<BodyReaction>& /*reactions*/) {}
+  /// Per reaction of the last set_body_reactions, the force the water exchanged with that body
+  /// over the last flow step, on the body [N] (its mean over the step); empty without coupling.
+  virtual std::vector<Vec2> exchanged_forces() const { return {}; }
 };
 
 }  // namespace flotsam

@@ -7,8 +7,10 @@
 // between them (reference: the control-volume momentum balance of open-channel hydraulics, e.g.
 // Chow 1959, ch. 3), less the same balance without the body. The wake sheds eddies, so every
 // quantity is the mean over the last 600 s of a 1200 s run (dt = 5 s). The rise far upstream
-// builds up on the slow time scale of friction (about H / (c_f U) = 15 min here) and is checked
-// only for its sign and growth.
+// builds up on the slow time scale of friction (about H / (c_f U) = 15 min here): it is checked
+// for its sign and for growing as the force does (a small rise is proportional to the force
+// held, Delta h = F / (rho g B h (1 - Fr^2)); the force is not proportional to the blocked width,
+// as the water slows under a wider raft and goes round it).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,7 +108,7 @@ Result run(double blocked_width) {
     if (s.time() <= end_time - averaging_time + 1e-9) continue;
     mean.upstream_eta += mean_eta_across(75.0);
     mean.momentum_drop += momentum_function(120.0) - momentum_function(180.0) - bed_friction();
-    mean.reaction += blocked_width > 0 ? s.bodies().reaction_force[0].x() : 0.0;
+    mean.reaction += blocked_width > 0 ? s.bodies().water_force[0].x() : 0.0;
     ++samples;
   }
   return {mean.upstream_eta / samples, mean.momentum_drop / samples, mean.reaction / samples};
@@ -120,14 +122,16 @@ TEST(AnchoredBodyRaisesWaterUpstream, RiseGrowsWithBlockageAndBalancesTheDrag) {
   const double rise_quarter = quarter.upstream_eta - free_flow.upstream_eta;  // [m]
   const double rise_half = half.upstream_eta - free_flow.upstream_eta;        // [m]
   EXPECT_GT(rise_quarter, 0.0);
-  EXPECT_GT(rise_half, 1.5 * rise_quarter);  // drag ~ blocked width: about twice the rise
-  std::printf("upstream rise %.4f m (5 m blocked), %.4f m (10 m blocked)\n", rise_quarter,
-              rise_half);
-  // Tolerances: 10% with a quarter of the width blocked; 25% with half of it, where the wake is
-  // a jet beside a separated eddy and the advective form of (M-1a), which does not conserve
-  // momentum exactly, loses 17% (41% before the explicit slope went to the departure point;
-  // docs/validation.md).
-  for (const auto& [r, tolerance] : {std::pair{quarter, 0.10}, std::pair{half, 0.25}}) {
+  EXPECT_GT(rise_half, 1.2 * rise_quarter);
+  const double rises = rise_half / rise_quarter, forces = half.reaction / quarter.reaction;
+  EXPECT_NEAR(rises, forces, 0.15 * forces);  // the rise grows as the force held
+  std::printf(
+      "upstream rise %.4f m (5 m blocked), %.4f m (10 m blocked): ratio %.3f, of the "
+      "forces %.3f\n",
+      rise_quarter, rise_half, rises, forces);
+  // Tolerance 10 %: where half the width is blocked the wake is a jet beside a separated eddy,
+  // and the advective form of (M-1a) does not conserve momentum exactly (docs/validation.md).
+  for (const auto& [r, tolerance] : {std::pair{quarter, 0.10}, std::pair{half, 0.10}}) {
     const double held = r.momentum_drop - free_flow.momentum_drop;  // [N]
     EXPECT_NEAR(held, r.reaction, tolerance * r.reaction);
     std::printf("momentum held %.1f N, exchanged %.1f N: %.1f %%\n", held, r.reaction,

@@ -12,18 +12,17 @@
 // - the reach's momentum balance (Chow 1959, ch. 3) between x = 120 and 180 m, as
 //   jam_at_bridge_raises_water_by_momentum.cpp checks it (the engine's fluxes through the
 //   sections, less the change of the reach's momentum over the window), equals the force the
-//   logs exchange with the water within 2 % (measured -0.05 %, -0.22 % with the elements along
-//   the curve: the water under the deck flows free, the deck takes no force), and the rise 20 m
-//   upstream is within 15 % of the rise
-//   the balance predicts by a 1D reading (measured +11.6 %: behind a jam of two logs abreast the
-//   water at x = 180 m is not uniform across, and its momentum flux is above that of its mean
-//   depth);
-// - the accumulation exchanges more than 1.3 times the force of the same logs as a layer
-//   (measured 1.51). Not 2.46, the ratio of the heights: a body held against the deck is free
-//   between contact solves and gathers speed with the water, and (M-5)'s added-mass reaction
-//   takes its unconstrained acceleration, so the water gets 0.37 (accumulation) and 0.42 (layer)
-//   of the drag the bodies would take at rest (printed; docs/model.md "Vertical extent of a
-//   jam").
+//   logs exchange with the water (what the flow's implicit drag took, BodySet::water_force)
+//   within 2 % (measured +0.03 %: the water under the deck flows free, the deck takes no force),
+//   and the rise 20 m upstream is within 15 % of the rise the balance predicts by a 1D reading
+//   (measured +8.3 %: behind a jam of two logs abreast the water at x = 180 m is not uniform
+//   across, and its momentum flux is above that of its mean depth);
+// - the accumulation exchanges more than 1.5 times the force of the same logs as a layer
+//   (measured 1.73; 2.36 is the ratio of the heights at equal velocity, and the water slows
+//   under the thicker jam), and each more than 0.6 of the drag (M-6) the jammed bodies would take
+//   at rest in the flow at the end (measured 0.72 and 0.70: a body held against the deck
+//   hovers a centimetre or two off it with the velocity s/h that would close the gap, docs/model.md
+//   "Pose update with the contact velocities", so its relative velocity is below the flow's).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,7 +87,7 @@ Means run(JamExtent extent) {
     if (std::abs(s.time() - (end_time - averaging_time)) < 1e-9) reach.start(s.flow());
     if (s.time() <= end_time - averaging_time + 1e-9) continue;
     reach.sample(s.flow());
-    for (int i = 0; i < s.bodies().size(); ++i) m.force += s.bodies().reaction_force[i].x();
+    for (int i = 0; i < s.bodies().size(); ++i) m.force += s.bodies().water_force[i].x();
     m.rise += s.backwater_rise().at(0);
     ++n;
   }
@@ -140,7 +139,9 @@ TEST(JamAccumulation, ActsOverItsThicknessAndTheWaterFeelsItWithMomentumExchange
   EXPECT_GT(acc.thickness, 2.0 * draft);
   EXPECT_NEAR(acc.balance, acc.force, 0.02 * acc.force);
   EXPECT_NEAR(acc.rise, predicted, 0.15 * predicted);
-  EXPECT_GT(acc.force, 1.3 * layer.force);
+  EXPECT_GT(acc.force, 1.5 * layer.force);
+  EXPECT_GT(acc.force, 0.6 * acc.held_drag);
+  EXPECT_GT(layer.force, 0.6 * layer.held_drag);
 }
 
 }  // namespace

@@ -9,13 +9,13 @@
 //   mean of M(x1) - M(x2) - (P(1200 s) - P(600 s)) / 600 s = mean of F,
 // M(x) = rho * integral over the section of (h u^2 + g h^2 / 2) dy, the engine's own flux through
 // the section's edges (tests/support/reach_momentum.hpp: whatever the cells' numbering), P the
-// reach's momentum, F the force the raft exchanges with the water (the sum of its reaction, exact
-// to round-off by two_way_momentum_exchange.cpp). Checked: the balance within 2 % of F (measured
-// -1.05 %; -1.07 % with the elements along the curve instead of in Cuthill-McKee order; the seiches
-// make the 120 samples' residual 3,900 N rms against F = 2,150 N, and the change of P over the
-// window is 3.4 % of F), and the rise the run reports for the bridge (its backwater section 20 m
-// upstream, against the same flow without the raft, `output.backwater`) within 5 % of the rise
-// the balance predicts there (measured -3.6 %): the depth h1 upstream that carries the momentum
+// reach's momentum, F the force the raft exchanges with the water (what the flow's implicit drag
+// took, BodySet::water_force, exact to round-off by FvFlowField's tests). Checked: the balance
+// within 2 % of F (measured -0.64 %, F = 3,070 N; the frictionless channel keeps the seiches of
+// its start, so the change of P over the window counts), and the rise the run reports for the
+// bridge (its backwater section 20 m upstream, against the same flow without the raft,
+// `output.backwater`) within 5 % of the rise the balance predicts there (measured +1.2 %): the
+// depth h1 upstream that carries the momentum
 // function of the section downstream plus F,
 //   B (q^2 / h1 + g h1^2 / 2) = B (q^2 / h2 + g h2^2 / 2) + F / rho,
 // against the depth the same solve gives without the raft (F = 0): a 1D reading of a 2D reach,
@@ -78,7 +78,7 @@ TEST(JamAtBridge, RaisesTheWaterUpstreamAsTheReachsMomentumBalancePredicts) {
     if (std::abs(s.time() - (end_time - averaging_time)) < 1e-9) reach.start(s.flow());
     if (s.time() <= end_time - averaging_time + 1e-9) continue;
     reach.sample(s.flow());
-    force += s.bodies().reaction_force[0].x();
+    force += s.bodies().water_force[0].x();
     rise += s.backwater_rise().at(0);
     ++n;
   }

@@ -104,7 +104,7 @@ void assemble(const AssemblyParameters& p, const ElementValues& ev, const Elemen
     Vec2 residual_k = Vec2::Zero();
     if (tau > 0.0)
       residual_k = (u_k - u_d) * p.inv_dt + th * advection_k + (1 - th) * advection_n +
-                   g * (th * grad_eta_k + (1 - th) * grad_eta_n) + gamma * u_k -
+                   g * (th * grad_eta_k + (1 - th) * grad_eta_n) + (gamma + s.drag_rate) * u_k -
                    nu * (th * visc_k + (1 - th) * visc_n) +
                    f * (th * coriolis_k + (1 - th) * coriolis_n) - force;
 
@@ -119,7 +119,8 @@ void assemble(const AssemblyParameters& p, const ElementValues& ev, const Elemen
       const double dpsi_dH = u_k.dot(dN[a]) * supg.dtau_dH;
       for (int b = 0; b < 6; ++b) {
         const double sN = s_a * N[b];
-        double diagonal = sN * (p.inv_dt + gamma) + th * nu * dN[a].dot(dN[b]);  // (1) (5) (4)
+        double diagonal =
+            sN * (p.inv_dt + gamma + s.drag_rate) + th * nu * dN[a].dot(dN[b]);  // (1) (5) (4)
         Mat2 block = sN * (friction_dir + th * f * rotation) +                   // (5) (6)
                      th * nu * dN[b] * dN[a].transpose();                        // (4)
         if constexpr (Eulerian) {

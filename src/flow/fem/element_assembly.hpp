@@ -88,6 +88,8 @@ struct ElementState {
   std::array<Vec2, 6> node_force;            // [m s^-2] per-node body force
   Vec2 element_force = Vec2::Zero();         // [m s^-2] per-element body force
   double nu_e = 0.0;                         // nu + nu_t [m^2/s]
+  double drag_rate = 0.0;  // c_e [1/s]: the bodies' drag -c_e u, implicit (its c_e v_p is in
+                           // element_force; model.md "Two-way coupling")
 };
 
 /// Terms (1)-(9), (11) of the element.

@@ -104,6 +104,7 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
   const Mesh& mesh = solver_.mesh();
   const double rho = solver_.flow_case().flow.water_density;  // [kg m^-3]
   std::vector<Vec2> forces(mesh.element_count(), Vec2::Zero());
+  std::vector<double> drag_rates(mesh.element_count(), 0.0);
   const FlowState& s = solver_.state();
   auto element_water_mass = [&](int e) {  // rho * integral of H over e (P1 eta, P2 bed, straight)
     const auto& el = mesh.elements[e];
@@ -112,20 +113,56 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
     const double zb = (z[el[3]] + z[el[4]] + z[el[5]]) / 3.0;  // exact mean of a P2 field
     return rho * mesh.area[e] * (eta - zb);
   };
+  reactions_ = reactions;
+  reaction_start_.assign(1, 0);
+  reaction_elements_.clear();
+  reaction_weights_.clear();
   FootprintWalk walk(mesh.element_count());
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
     const Location where = locator_.locate(r.centre, -1);
-    if (!where.inside) continue;
-    const std::vector<int>& found = walk.covered(r, where.element, k, Elements{mesh});
+    const std::vector<int>& found =
+        where.inside ? walk.covered(r, where.element, k, Elements{mesh}) : std::vector<int>{};
     // A footprint smaller than the elements: the one holding the centre.
-    const std::span<const int> covered =
-        found.empty() ? std::span<const int>(&where.element, 1) : found;
+    const std::span<const int> covered = !where.inside   ? std::span<const int>{}
+                                         : found.empty() ? std::span<const int>(&where.element, 1)
+                                                         : std::span<const int>(found);
     double mass = 0.0;  // [kg]
     for (int e : covered) mass += element_water_mass(e);
-    for (int e : covered) forces[e] += r.force / mass;  // [m s^-2]
+    for (int e : covered) {
+      // Spread by the water's mass: every element under the body takes the same acceleration,
+      // the added mass's part explicit, the drag -K (u - u_p) / mass implicit.
+      forces[e] += (r.force + r.drag_rate * r.velocity) / mass;  // [m s^-2]
+      drag_rates[e] += r.drag_rate / mass;                       // [1/s]
+      reaction_elements_.push_back(e);
+      reaction_weights_.push_back(element_water_mass(e) / mass);
+    }
+    reaction_start_.push_back(static_cast<int>(reaction_elements_.size()));
   }
-  solver_.set_element_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
+  const bool none = reactions.empty();
+  solver_.set_element_forces(none ? std::vector<Vec2>{} : std::move(forces));
+  solver_.set_element_drag_rates(none ? std::vector<double>{} : std::move(drag_rates));
+}
+
+// Body k's drag at the elements' mean velocity now, K sum_e w_e (u_e - u_p), and its added
+// mass's part: after a step, what the step's implicit drag took from the water.
+std::vector<Vec2> FemFlowField::exchanged_forces() const {
+  const Mesh& mesh = solver_.mesh();
+  const FlowState& s = solver_.state();
+  std::vector<Vec2> out(reactions_.size(), Vec2::Zero());
+  for (std::size_t k = 0; k < reactions_.size(); ++k) {
+    const BodyReaction& r = reactions_[k];
+    if (reaction_start_[k] == reaction_start_[k + 1]) continue;  // outside: nothing exchanged
+    Vec2 u = Vec2::Zero();  // [m/s] the water's mean velocity under the body, by mass
+    for (int j = reaction_start_[k]; j < reaction_start_[k + 1]; ++j) {
+      const auto& el = mesh.elements[reaction_elements_[j]];
+      const Vec2 u_e((s.u[el[3]] + s.u[el[4]] + s.u[el[5]]) / 3.0,  // exact mean of P2
+                     (s.v[el[3]] + s.v[el[4]] + s.v[el[5]]) / 3.0);
+      u += reaction_weights_[j] * u_e;
+    }
+    out[k] = r.drag_rate * (u - r.velocity) - r.force;
+  }
+  return out;
 }
 
 }  // namespace flotsam

@@ -2,9 +2,10 @@
 // FlowField (flow_field.hpp) for the FEM engine: samples the two states bracketing the current
 // step at a point, located by the neighbour walk (mesh/point_locator.hpp), with P2 velocity and
 // bed, P1 elevation, linear interpolation in time, du/dt = (u^{n+1} - u^n) / dt. Body reactions
-// become per-element forces per unit mass, F_bodies = - F_x / (rho H A_fp) (spec 5), spread over
-// the elements whose centroid lies in the footprint (the element holding the centre when none
-// does), scaled so that sum_e rho (integral of H over e) F_e = - F_x to round-off.
+// become per-element accelerations, F_bodies = - F_x / (rho H A_fp) (spec 5), spread over the
+// elements whose centroid lies in the footprint (the element holding the centre when none does),
+// scaled so that sum_e rho (integral of H over e) F_e = - F_x to round-off; the drag part of F_x
+// as -K (u - u_p) / (rho H A_fp), implicit in the velocity (model.md "Two-way coupling").
 #include <vector>
 
 #include "flow/fem/shallow_water_solver.hpp"
@@ -44,7 +45,10 @@ class FemFlowField final : public FlowField {
                     int* hints, BatchFlow& out) const override;
   double time_begin() const override { return solver_.previous_state().time; }
   double time_end() const override { return solver_.time(); }
+  /// Each body spread by the water's mass over the elements under it: the added mass's part of
+  /// -F_x explicit, the drag implicit in the momentum equation, as friction is.
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;
+  std::vector<Vec2> exchanged_forces() const override;
 
  private:
   ShallowWaterSolver& solver_;
@@ -53,6 +57,11 @@ class FemFlowField final : public FlowField {
   std::vector<double> pack_storage_;               // the nodes' packs for sample_batch from pack_
   int pack_ = 0;                                   // (the first 64-byte boundary in the storage)
   double packed_begin_ = 0.0, packed_end_ = -1.0;  // [s] the states' times when packed
+  // The last reactions and, per reaction k, its elements and their shares of its water in
+  // [reaction_start_[k], reaction_start_[k + 1]).
+  std::vector<BodyReaction> reactions_;
+  std::vector<int> reaction_start_, reaction_elements_;
+  std::vector<double> reaction_weights_;
 };
 
 }  // namespace flotsam

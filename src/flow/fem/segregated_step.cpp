@@ -386,6 +386,9 @@ void SegregatedStep::assemble_momentum(ShallowWaterSolver& s, double t_source, L
           by_element ? friction.rate(speed[el[a]], loads.depth[el[a]]) : node_rate[el[a]];
       loads.gamma_m[el[a]] += A * diagonal[a] / diagonal_sum * gamma;
     }
+    if (!s.element_drag_rates_.empty())  // the bodies' drag, implicit and lumped as (5)
+      for (int a = 0; a < 6; ++a)
+        loads.gamma_m[el[a]] += A * diagonal[a] / diagonal_sum * s.element_drag_rates_[e];
     Vec2 total_force = Vec2::Zero();  // integral of (7) over the element [m^3 s^-2]
     for (int q = 0; q < triangle_point_count; ++q) {
       const auto& N = ev.N2[q];

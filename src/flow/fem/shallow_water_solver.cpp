@@ -241,6 +241,7 @@ ElementState ShallowWaterSolver::element_state(int e, const Iteration& it) const
     s.eta_d[j] = it.now * n.eta[el[j]] + (history ? it.before * before_.eta[el[j]] : 0.0);
   }
   if (!element_forces_.empty()) s.element_force = element_forces_[e];
+  if (!element_drag_rates_.empty()) s.drag_rate = element_drag_rates_[e];
   return s;
 }
 

@@ -118,6 +118,9 @@ class ShallowWaterSolver {
   /// per element (constant on it) and per P2 node (interpolated). Empty: none.
   void set_element_forces(std::vector<Vec2> forces) { element_forces_ = std::move(forces); }
   const std::vector<Vec2>& element_forces() const { return element_forces_; }
+  /// The bodies' drag per element, c_e [1/s] in -c_e u, implicit; empty: none.
+  void set_element_drag_rates(std::vector<double> rates) { element_drag_rates_ = std::move(rates); }
+  const std::vector<double>& element_drag_rates() const { return element_drag_rates_; }
   void set_node_forces(std::vector<Vec2> forces) { node_forces_ = std::move(forces); }
 
   // ---- fields ----
@@ -208,9 +211,10 @@ class ShallowWaterSolver {
   std::vector<double> friction_coefficient_;  // n, C or K per element (the law's unit)
   std::vector<double> lumped_p1_;             // [m^2] integral of each P1 basis function
   std::vector<Vec2> element_forces_, node_forces_;
-  std::vector<double> open_flux_;     // [m^3/s] term (10) per mesh group, last assembly
-  std::vector<int> elevation_group_;  // per elevation node: its mesh group
-  std::vector<int> elevation_edges_;  // boundary edges of groups with an elevation alone
+  std::vector<double> element_drag_rates_;  // [1/s]
+  std::vector<double> open_flux_;           // [m^3/s] term (10) per mesh group, last assembly
+  std::vector<int> elevation_group_;        // per elevation node: its mesh group
+  std::vector<int> elevation_edges_;        // boundary edges of groups with an elevation alone
   std::vector<std::array<int, 2>> mid_vertices_;  // per P2 node >= vertex_count: edge ends
   double bed_volume_ = 0.0;                       // integral of z_b [m^3]
   double H_mean_ = 1.0;                           // [m] initial mean depth (residual scaling)

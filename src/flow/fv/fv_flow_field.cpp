@@ -109,23 +109,63 @@ struct WetCells {
 void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions) {
   const CellMesh& c = solver_.cells();
   const WetCells cells{c, solver_.state().h, solver_.dry_depth()};
+  const double rho = solver_.water_density();  // [kg/m^3]
   std::vector<Vec2> forces(c.cell_count, Vec2::Zero());
+  BodyDrag drag;
+  drag.reset(c.cell_count);
+  reactions_ = reactions;
+  reaction_start_.assign(1, 0);
+  reaction_cells_.clear();
+  reaction_weights_.clear();
   FootprintWalk walk(c.cell_count);
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
     FlowSample where;
     int hint = -1;
     const int start = cell_at(r.centre, hint, where);
-    if (start < 0) continue;
-    const std::vector<int>& found = walk.covered(r, start, k, cells);
-    if (found.empty() && !cells.counts(start)) continue;  // on a dry bed: nothing reaches water
-    // A footprint smaller than the cells: the one holding the centre.
-    const std::span<const int> covered = found.empty() ? std::span<const int>(&start, 1) : found;
+    const std::vector<int>& found =
+        start < 0 ? std::vector<int>{} : walk.covered(r, start, k, cells);
+    // A footprint smaller than the cells: the one holding the centre; on a dry bed nothing
+    // reaches the water.
+    const bool wet = start >= 0 && (!found.empty() || cells.counts(start));
+    const std::span<const int> covered = !wet            ? std::span<const int>{}
+                                         : found.empty() ? std::span<const int>(&start, 1)
+                                                         : std::span<const int>(found);
     double area = 0.0;  // [m^2]
     for (int i : covered) area += c.area[i];
-    for (int i : covered) forces[i] += r.force * (c.area[i] / area);  // [N]
+    for (int i : covered) {
+      const double w = c.area[i] / area;                     // [-] the cell's share of the body
+      forces[i] += r.force * w;                              // [N]
+      const double a = r.drag_rate * w / (rho * c.area[i]);  // [m/s]
+      drag.rate[i] += a;
+      drag.target[i] += a * r.velocity;
+      reaction_cells_.push_back(i);
+      reaction_weights_.push_back(w);
+    }
+    reaction_start_.push_back(static_cast<int>(reaction_cells_.size()));
   }
+  drag_start_ = solver_.time();
   solver_.set_cell_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
+  solver_.set_body_drag(reactions.empty() ? BodyDrag{} : std::move(drag));
+}
+
+// Body k's drag over the flow step, K sum_i w_i (int u_i dt - v int dt) / span, exactly what its
+// cells gave up (body_drag.hpp), and its added mass's explicit part.
+std::vector<Vec2> FvFlowField::exchanged_forces() const {
+  const BodyDrag& drag = solver_.body_drag();
+  const double span = solver_.time() - drag_start_;  // [s]
+  std::vector<Vec2> out(reactions_.size(), Vec2::Zero());
+  if (drag.empty() || !(span > 0.0)) return out;
+  for (std::size_t k = 0; k < reactions_.size(); ++k) {
+    const BodyReaction& r = reactions_[k];
+    Vec2 impulse = Vec2::Zero();  // [N s] per kg/s
+    for (int j = reaction_start_[k]; j < reaction_start_[k + 1]; ++j) {
+      const int i = reaction_cells_[j];
+      impulse += reaction_weights_[j] * (drag.velocity_time[i] - drag.time[i] * r.velocity);
+    }
+    out[k] = r.drag_rate * impulse / span - r.force;
+  }
+  return out;
 }
 
 // The cells under each body, and the one holding its centre when its footprint holds no cell's

@@ -5,10 +5,11 @@
 // that bracket the coupling step, interpolated linearly in time; du/dt is their difference over
 // the step. The bed and its slope are the plane through the cell's three corners.
 //
-// Body reactions (spec 5, two-way): the force -F_x of a body is shared among the wet cells whose
-// centroid lies in its footprint, in proportion to their area (the wet cell holding its centre
-// when none does), so the water receives exactly -F_x; a body over dry cells gives nothing to
-// the water (it rests on the bed).
+// Body reactions (spec 5, two-way): each body is shared among the wet cells whose centroid lies
+// in its footprint, in proportion to their area (the wet cell holding its centre when none does):
+// its added mass's part of -F_x as a force, its drag as a point-implicit drag at the cells' own
+// velocity (body_drag.hpp); a body over dry cells gives nothing to the water (it rests on the
+// bed). What each body exchanged over the flow step is measured from what its cells gave up.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -39,6 +40,7 @@ class FvFlowField final : public FlowField {
   double time_begin() const override { return t0_; }
   double time_end() const override { return t1_; }
   void set_body_reactions(const std::vector<BodyReaction>& reactions) override;
+  std::vector<Vec2> exchanged_forces() const override;
   /// Per cell, 1 under one of `bodies` (wet or dry), else 0; empty when there are none.
   std::vector<std::uint8_t> cells_under(const std::vector<BodyFootprint>& bodies) const;
 
@@ -56,6 +58,12 @@ class FvFlowField final : public FlowField {
   std::vector<Vec2> bed_slope_;   // [-] grad z_b per cell
   CellField begin_, end_;
   double t0_ = 0.0, t1_ = 0.0;  // [s]
+  // The last reactions and, per reaction k, its cells and their weights in
+  // [reaction_start_[k], reaction_start_[k + 1]); the time the drag started [s].
+  std::vector<BodyReaction> reactions_;
+  std::vector<int> reaction_start_, reaction_cells_;
+  std::vector<double> reaction_weights_;
+  double drag_start_ = 0.0;
 };
 
 }  // namespace flotsam

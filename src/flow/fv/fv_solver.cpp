@@ -109,6 +109,7 @@ void FiniteVolumeSolver::initialize() {
   }
   check(U_);
   cell_force_.clear();
+  body_drag_ = {};
   stats_ = {};
   restart_water_balance();
 }
@@ -365,6 +366,13 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) con
   U.hv[i] *= factor;
 }
 
+// The bodies' drag after friction (body_drag.hpp).
+void FiniteVolumeSolver::apply_body_drag(ConservedState& U, double dt) {
+  if (body_drag_.empty()) return;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < cells_.cell_count; ++i) body_drag_.apply(U, i, dt, dry_depth_);
+}
+
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
 void FiniteVolumeSolver::apply_infiltration(ConservedState& U, double dt) {
   if (!rain_.infiltrating()) return;
@@ -451,6 +459,7 @@ void FiniteVolumeSolver::advance(double dt) {
     balance_.sources += source_volume;
     apply_infiltration(U1_, h);
     apply_friction(U1_, h);
+    apply_body_drag(U1_, h);
     std::swap(U_, U1_);
     U_.time = h == t_end - t ? t_end : t + h;
     shrink = 1.0;

@@ -20,6 +20,7 @@
 
 #include "core/vec.hpp"
 #include "flow/friction.hpp"
+#include "flow/fv/body_drag.hpp"
 #include "flow/fv/cell_mesh.hpp"
 #include "flow/fv/deck_flux.hpp"
 #include "flow/fv/flow_sources.hpp"
@@ -77,6 +78,9 @@ class FiniteVolumeSolver {
 
   /// Body forces [N] per cell, acting on the water during the next steps (two-way coupling).
   void set_cell_forces(std::vector<Vec2> forces) { cell_force_ = std::move(forces); }
+  /// The bodies' drag per cell, point-implicit after friction (body_drag.hpp); empty: none.
+  void set_body_drag(BodyDrag drag) { body_drag_ = std::move(drag); }
+  const BodyDrag& body_drag() const { return body_drag_; }
   /// Called after every sub-step with the state's new time and the sub-step's length [s].
   void set_sub_step_observer(std::function<void(double t, double dt)> f) {
     sub_step_observer_ = std::move(f);
@@ -112,7 +116,8 @@ class FiniteVolumeSolver {
   /// the cell on that side receives it (with its hydrostatic correction, (M-12)). A section's
   /// momentum balance checked with these is the scheme's, whatever side a sampled value takes.
   SectionFlux section_flux(std::span<const int> edges, Vec2 direction) const;
-  double dry_depth() const { return dry_depth_; }  // [m]
+  double dry_depth() const { return dry_depth_; }                    // [m]
+  double water_density() const { return case_.flow.water_density; }  // [kg/m^3]
 
  private:
   /// The time levels of L's part being evaluated (local time stepping): all by default.
@@ -142,6 +147,7 @@ class FiniteVolumeSolver {
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
+  void apply_body_drag(ConservedState& U, double dt);
   // Local time stepping (local_time_steps.cpp).
   void advance_local(double dt);
   std::vector<std::vector<int>> tied_cells() const;
@@ -179,6 +185,7 @@ class FiniteVolumeSolver {
   // Scratch of the operator L (mutable: evaluating L, as courant_step does, changes no state).
   mutable CellField field_;       // the stage's reconstruction
   std::vector<Vec2> cell_force_;  // [N] body reactions
+  BodyDrag body_drag_;
   RainSource rain_;
   double rain_depth_ = 0.0;  // [m] int r dt over the current sub-step (times w_i per cell)
   FlowSources sources_;

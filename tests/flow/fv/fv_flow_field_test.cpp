@@ -181,5 +181,45 @@ TEST(FvFlowField, WaterReceivesTheBodyReactionAsMomentum) {
   EXPECT_NEAR((momentum - F * dt).norm(), 0.0, 1e-9 * F.norm() * dt);
 }
 
+// A body moving at v over a lake at rest drags the water along, point-implicitly (body_drag.hpp):
+// over one sub-step the stages see water at rest (no flux), and every cell under the body has
+// the same a = K / (rho A_b) (its share w_i = A_i / A_b), so the water under it, of mass
+// M = rho h A_b, takes exactly K v dt / (1 + K dt / M): never more than M v, however stiff.
+// What the field reports for the body is what the water took, to round-off.
+TEST(FvFlowField, BodyDragIsImplicitAndReportsWhatTheWaterTook) {
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 10.0, 4.0, 10, 4, true});
+  const Case c = test::closed_basin_case(1.0);
+  const double rho = c.flow.water_density;
+  for (const double K : {40.0, 4.0e6}) {  // [kg/s]: K dt / M about 1e-4 and 10
+    FvEngine engine(mesh, c);
+    engine.initialize();
+    BodyReaction r{Vec2(5.2, 2.1), Vec2(1.5, 0.6), 0.3, Vec2::Zero()};
+    r.drag_rate = K;
+    r.velocity = Vec2(0.8, -0.3);  // [m/s]
+    engine.field().set_body_reactions({r});
+    const CellMesh& cells = engine.solver().cells();
+    double area = 0.0;  // [m^2] of the cells under the body
+    for (int i = 0; i < cells.cell_count; ++i)
+      if (engine.solver().body_drag().rate[i] > 0.0) area += cells.area[i];
+    const double dt = 0.5 * engine.solver().courant_step();
+    engine.step(dt);
+    ASSERT_EQ(engine.solver().sub_steps().count, 1);
+    const ConservedState& U = engine.solver().state();
+    Vec2 momentum = Vec2::Zero();  // [kg m/s]
+    double fastest = 0.0;          // [m/s] along v
+    for (int i = 0; i < cells.cell_count; ++i) {
+      momentum += rho * cells.area[i] * Vec2(U.hu[i], U.hv[i]);
+      fastest = std::max(fastest, Vec2(U.hu[i], U.hv[i]).dot(r.velocity) / U.h[i]);
+    }
+    const double M = rho * 1.0 * area;  // [kg]
+    const Vec2 expected = K * r.velocity * dt / (1.0 + K * dt / M);
+    EXPECT_NEAR((momentum - expected).norm(), 0.0, 1e-12 * expected.norm()) << "K " << K;
+    EXPECT_LE(fastest, r.velocity.squaredNorm());  // never past the body's velocity
+    const std::vector<Vec2> exchanged = engine.field().exchanged_forces();
+    ASSERT_EQ(exchanged.size(), 1u);
+    EXPECT_NEAR((exchanged[0] * dt + momentum).norm(), 0.0, 1e-12 * momentum.norm()) << "K " << K;
+  }
+}
+
 }  // namespace
 }  // namespace flotsam
