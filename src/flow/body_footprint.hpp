@@ -47,4 +47,16 @@ class FootprintWalk {
   std::vector<int> queue_, covered_;
 };
 
+/// Per body, the cells it was spread over and each one's share of it (sum 1), in
+/// [start[k], start[k + 1]): what an engine needs to say, after a step, what each body exchanged.
+struct FootprintShares {
+  std::vector<int> start{0}, cell;
+  std::vector<double> share;  // [-]
+
+  void clear() { start.assign(1, 0), cell.clear(), share.clear(); }
+  void add(int i, double w) { cell.push_back(i), share.push_back(w); }
+  void close_body() { start.push_back(static_cast<int>(cell.size())); }
+  bool empty(int k) const { return start[k] == start[k + 1]; }
+};
+
 }  // namespace flotsam

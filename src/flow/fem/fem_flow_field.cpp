@@ -114,9 +114,7 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
     return rho * mesh.area[e] * (eta - zb);
   };
   reactions_ = reactions;
-  reaction_start_.assign(1, 0);
-  reaction_elements_.clear();
-  reaction_weights_.clear();
+  shares_.clear();
   FootprintWalk walk(mesh.element_count());
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
@@ -128,16 +126,19 @@ void FemFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions
                                          : found.empty() ? std::span<const int>(&where.element, 1)
                                                          : std::span<const int>(found);
     double mass = 0.0;  // [kg]
-    for (int e : covered) mass += element_water_mass(e);
     for (int e : covered) {
+      shares_.add(e, element_water_mass(e));
+      mass += shares_.share.back();
+    }
+    for (int j = shares_.start[k]; j < static_cast<int>(shares_.cell.size()); ++j) {
       // Spread by the water's mass: every element under the body takes the same acceleration,
       // the added mass's part explicit, the drag -K (u - u_p) / mass implicit.
+      const int e = shares_.cell[j];
       forces[e] += (r.force + r.drag_rate * r.velocity) / mass;  // [m s^-2]
       drag_rates[e] += r.drag_rate / mass;                       // [1/s]
-      reaction_elements_.push_back(e);
-      reaction_weights_.push_back(element_water_mass(e) / mass);
+      shares_.share[j] /= mass;
     }
-    reaction_start_.push_back(static_cast<int>(reaction_elements_.size()));
+    shares_.close_body();
   }
   const bool none = reactions.empty();
   solver_.set_element_forces(none ? std::vector<Vec2>{} : std::move(forces));
@@ -150,15 +151,15 @@ std::vector<Vec2> FemFlowField::exchanged_forces() const {
   const Mesh& mesh = solver_.mesh();
   const FlowState& s = solver_.state();
   std::vector<Vec2> out(reactions_.size(), Vec2::Zero());
-  for (std::size_t k = 0; k < reactions_.size(); ++k) {
+  for (int k = 0; k < static_cast<int>(reactions_.size()); ++k) {
+    if (shares_.empty(k)) continue;  // outside: nothing exchanged
     const BodyReaction& r = reactions_[k];
-    if (reaction_start_[k] == reaction_start_[k + 1]) continue;  // outside: nothing exchanged
     Vec2 u = Vec2::Zero();  // [m/s] the water's mean velocity under the body, by mass
-    for (int j = reaction_start_[k]; j < reaction_start_[k + 1]; ++j) {
-      const auto& el = mesh.elements[reaction_elements_[j]];
+    for (int j = shares_.start[k]; j < shares_.start[k + 1]; ++j) {
+      const auto& el = mesh.elements[shares_.cell[j]];
       const Vec2 u_e((s.u[el[3]] + s.u[el[4]] + s.u[el[5]]) / 3.0,  // exact mean of P2
                      (s.v[el[3]] + s.v[el[4]] + s.v[el[5]]) / 3.0);
-      u += reaction_weights_[j] * u_e;
+      u += shares_.share[j] * u_e;
     }
     out[k] = r.drag_rate * (u - r.velocity) - r.force;
   }

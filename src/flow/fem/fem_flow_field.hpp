@@ -8,6 +8,7 @@
 // as -K (u - u_p) / (rho H A_fp), implicit in the velocity (model.md "Two-way coupling").
 #include <vector>
 
+#include "flow/body_footprint.hpp"
 #include "flow/fem/shallow_water_solver.hpp"
 #include "flow/flow_field.hpp"
 #include "mesh/point_locator.hpp"
@@ -57,11 +58,8 @@ class FemFlowField final : public FlowField {
   std::vector<double> pack_storage_;               // the nodes' packs for sample_batch from pack_
   int pack_ = 0;                                   // (the first 64-byte boundary in the storage)
   double packed_begin_ = 0.0, packed_end_ = -1.0;  // [s] the states' times when packed
-  // The last reactions and, per reaction k, its elements and their shares of its water in
-  // [reaction_start_[k], reaction_start_[k + 1]).
-  std::vector<BodyReaction> reactions_;
-  std::vector<int> reaction_start_, reaction_elements_;
-  std::vector<double> reaction_weights_;
+  std::vector<BodyReaction> reactions_;  // the last ones, and where each went (shares by water)
+  FootprintShares shares_;
 };
 
 }  // namespace flotsam

@@ -114,9 +114,7 @@ void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions)
   BodyDrag drag;
   drag.reset(c.cell_count);
   reactions_ = reactions;
-  reaction_start_.assign(1, 0);
-  reaction_cells_.clear();
-  reaction_weights_.clear();
+  shares_.clear();
   FootprintWalk walk(c.cell_count);
   for (int k = 0; k < static_cast<int>(reactions.size()); ++k) {
     const BodyReaction& r = reactions[k];
@@ -139,10 +137,9 @@ void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions)
       const double a = r.drag_rate * w / (rho * c.area[i]);  // [m/s]
       drag.rate[i] += a;
       drag.target[i] += a * r.velocity;
-      reaction_cells_.push_back(i);
-      reaction_weights_.push_back(w);
+      shares_.add(i, w);
     }
-    reaction_start_.push_back(static_cast<int>(reaction_cells_.size()));
+    shares_.close_body();
   }
   drag_start_ = solver_.time();
   solver_.set_cell_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
@@ -156,14 +153,15 @@ std::vector<Vec2> FvFlowField::exchanged_forces() const {
   const double span = solver_.time() - drag_start_;  // [s]
   std::vector<Vec2> out(reactions_.size(), Vec2::Zero());
   if (drag.empty() || !(span > 0.0)) return out;
-  for (std::size_t k = 0; k < reactions_.size(); ++k) {
+  for (int k = 0; k < static_cast<int>(reactions_.size()); ++k) {
+    if (shares_.empty(k)) continue;  // on a dry bed or outside: nothing exchanged
     const BodyReaction& r = reactions_[k];
-    Vec2 impulse = Vec2::Zero();  // [N s] per kg/s
-    for (int j = reaction_start_[k]; j < reaction_start_[k + 1]; ++j) {
-      const int i = reaction_cells_[j];
-      impulse += reaction_weights_[j] * (drag.velocity_time[i] - drag.time[i] * r.velocity);
+    Vec2 slip = Vec2::Zero();  // [m] int (u - u_p) dt, by the cells' shares
+    for (int j = shares_.start[k]; j < shares_.start[k + 1]; ++j) {
+      const int i = shares_.cell[j];
+      slip += shares_.share[j] * (drag.velocity_time[i] - drag.time[i] * r.velocity);
     }
-    out[k] = r.drag_rate * impulse / span - r.force;
+    out[k] = r.drag_rate * slip / span - r.force;
   }
   return out;
 }

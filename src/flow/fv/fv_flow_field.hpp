@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "flow/body_footprint.hpp"
 #include "flow/flow_field.hpp"
 #include "flow/fv/fv_solver.hpp"
 #include "mesh/point_locator.hpp"
@@ -57,13 +58,10 @@ class FvFlowField final : public FlowField {
   std::vector<double> node_bed_;  // [m] per mesh node
   std::vector<Vec2> bed_slope_;   // [-] grad z_b per cell
   CellField begin_, end_;
-  double t0_ = 0.0, t1_ = 0.0;  // [s]
-  // The last reactions and, per reaction k, its cells and their weights in
-  // [reaction_start_[k], reaction_start_[k + 1]); the time the drag started [s].
-  std::vector<BodyReaction> reactions_;
-  std::vector<int> reaction_start_, reaction_cells_;
-  std::vector<double> reaction_weights_;
-  double drag_start_ = 0.0;
+  double t0_ = 0.0, t1_ = 0.0;           // [s]
+  std::vector<BodyReaction> reactions_;  // the last ones, and where each went
+  FootprintShares shares_;
+  double drag_start_ = 0.0;  // [s] the time they were set
 };
 
 }  // namespace flotsam
