@@ -35,15 +35,15 @@ double closing_speed(const BodySet& b, int i, int j) {
   return rigid.norm() + std::abs(b.angular_velocity[i] - b.angular_velocity[j]) * R;
 }
 
-// The drag [N] at the body's velocity now: the last sub-step's, or, when a contact has since
-// slowed the body against the flow, its law (M-6) at the new relative velocity, K / |u_rel| of
-// the last sub-step times |u_f - u_p|^2: a log just stopped against a deck takes the drag of a
-// body at rest, many times what it felt drifting, and must not cross the step unplanned.
-double drag_now(const BodySet& b, int i) {
-  const double last = b.drag_force[i].norm();  // [N]
-  if (!(b.drag_rate[i] > 0.0) || last == 0.0) return last;
-  const double per_speed_squared = b.drag_rate[i] * b.drag_rate[i] / last;  // [kg/m]
-  return std::max(last, per_speed_squared * (b.flow_velocity[i] - b.velocity[i]).squaredNorm());
+// How much faster than now a body may drift in the step because a contact slowed it against the
+// flow since its last sub-step [m/s]: its speed relative to the water grew from |u_rel| (the
+// last sub-step's, F_drag / K) to |u_f - u_p|, and the drag alone never carries it past the
+// water's velocity. A log just stopped against a deck takes the drag of a body at rest, many
+// times what it felt drifting, and must not cross the step unplanned.
+double slowed_drift(const BodySet& b, int i) {
+  if (!(b.drag_rate[i] > 0.0)) return 0.0;  // no drag yet (just placed) or none (no water)
+  const double last = b.drag_force[i].norm() / b.drag_rate[i];  // [m/s]
+  return std::max(0.0, (b.flow_velocity[i] - b.velocity[i]).norm() - last);
 }
 
 // The fewest equal intervals of a step dt in which a pair closing at speed c [m/s] with relative
@@ -67,7 +67,7 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
   const int n = bodies.size();
   const auto N = static_cast<std::size_t>(n);
   footprint_.resize(N), swept_.resize(N), active_.resize(N);
-  reach_.resize(N), speed_.resize(N), spin_.resize(N), acceleration_.resize(N);
+  reach_.resize(N), speed_.resize(N), drift_.resize(N), spin_.resize(N), acceleration_.resize(N);
   fine_parent_.resize(N), intervals_.assign(N, 0);
   for (int i = 0; i < n; ++i) {
     active_[i] = bodies.state[i] != BodyState::gone && !bodies.anchored[i];
@@ -76,13 +76,15 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
                       std::abs(u.y()) * h.x() + std::abs(u.x()) * h.y());
     footprint_[i] = {bodies.position[i] - extent, bodies.position[i] + extent};
     speed_[i] = bodies.velocity[i].norm();
+    drift_[i] = slowed_drift(bodies, i);
     spin_[i] = std::abs(bodies.angular_velocity[i]) * 0.5 *
                std::hypot(bodies.length[i], bodies.width[i]);            // [m/s] of its corners
     const Vec2 added = bodies.reaction_force[i] - bodies.drag_force[i];  // [N]
     acceleration_[i] =
-        (drag_now(bodies, i) + bodies.bed_force[i].norm() + added.norm()) / bodies.mass[i];
+        (bodies.drag_force[i].norm() + bodies.bed_force[i].norm() + added.norm()) / bodies.mass[i];
     const double margin = 2.0 * config.allowed_overlap * bodies.width[i];  // [m]
-    reach_[i] = safety * ((speed_[i] + spin_[i]) * dt + 0.5 * acceleration_[i] * dt * dt);
+    reach_[i] =
+        safety * ((speed_[i] + drift_[i] + spin_[i]) * dt + 0.5 * acceleration_[i] * dt * dt);
     const Vec2 grow = Vec2::Constant(reach_[i] + margin);
     swept_[i] = {footprint_[i].lower - grow, footprint_[i].upper + grow};
   }
@@ -91,7 +93,7 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
   for (int i = 0; i < n; ++i) present[i] = bodies.state[i] != BodyState::gone;
   for (int i = 0; i < n; ++i) {
     if (present[i] && !active_[i]) {
-      reach_[i] = speed_[i] = spin_[i] = acceleration_[i] = 0.0;
+      reach_[i] = speed_[i] = drift_[i] = spin_[i] = acceleration_[i] = 0.0;
       const Vec2 grow = Vec2::Constant(2.0 * config.allowed_overlap * bodies.width[i]);
       swept_[i] = {footprint_[i].lower - grow, footprint_[i].upper + grow};
     }
@@ -105,9 +107,10 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
     if (!active_[i] && !active_[j]) continue;  // two anchored bodies
     const double margin = 2.0 * config.allowed_overlap * (bodies.width[i] + bodies.width[j]);
     const double c = std::min({closing_speed(bodies, i, j), closing_speed(bodies, j, i),
-                               speed_[i] + spin_[i] + speed_[j] + spin_[j]});  // [m/s]
-    const double a = acceleration_[i] + acceleration_[j];                      // [m/s^2]
-    const double closing = safety * (c * dt + 0.5 * a * dt * dt);              // [m]
+                               speed_[i] + spin_[i] + speed_[j] + spin_[j]}) +
+                     drift_[i] + drift_[j];                        // [m/s]
+    const double a = acceleration_[i] + acceleration_[j];          // [m/s^2]
+    const double closing = safety * (c * dt + 0.5 * a * dt * dt);  // [m]
     if (box_gap(footprint_[i], footprint_[j]) > closing + margin) continue;
     links.emplace_back(i, j);
     link_intervals.push_back(intervals_for(c, a, std::min(bodies.width[i], bodies.width[j]), dt));
@@ -121,8 +124,8 @@ ContactSchedule ContactPlanner::plan(const BodySet& bodies, const BoundarySegmen
       const Aabb segment{walls.start[s].cwiseMin(walls.end[s]),
                          walls.start[s].cwiseMax(walls.end[s])};
       if (box_gap(footprint_[i], segment) > reach_[i] + margin) continue;
-      intervals_[i] = std::max(intervals_[i], intervals_for(speed_[i] + spin_[i], acceleration_[i],
-                                                            bodies.width[i], dt));
+      intervals_[i] = std::max(intervals_[i], intervals_for(speed_[i] + drift_[i] + spin_[i],
+                                                            acceleration_[i], bodies.width[i], dt));
     }
   }
   // Fine groups: the components of the links that need more than one interval (and of the

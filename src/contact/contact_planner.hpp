@@ -46,7 +46,7 @@ class ContactPlanner {
   SweepAndPrune sweep_;
   std::vector<Aabb> footprint_, swept_;
   std::vector<char> active_;
-  std::vector<double> reach_, speed_, spin_, acceleration_;
+  std::vector<double> reach_, speed_, drift_, spin_, acceleration_;
   std::vector<BodyPair> pairs_;
   std::vector<int> fine_parent_, intervals_, found_, stamp_;
   int stamp_value_ = 0;

@@ -92,6 +92,33 @@ TEST(ContactPlanner, AnAcceleratedBodyGetsIntervalsInWhichItMovesAQuarterWidth) 
   EXPECT_EQ(planner.plan(bodies, bank_at_zero(), 1.0, ContactConfig{}).groups[0].intervals, 8);
 }
 
+// A log a contact has just stopped 2 m from the bank (its footprint's edge), the water running at
+// 1.5 m/s towards the bank: its last sub-step saw it drift at 0.05 m/s relative to the water
+// (drag K u_rel, K = 100 kg/s), so its loads are tiny, but within the step the drag can bring
+// it back to 1.45 m/s faster than now: reach 1.5 * 1.45 m > 2 m, intervals in which it moves a
+// quarter width, ceil(1.5 * 1.45 / 0.25) = 9. Had the contact not stopped it (u_p = u_f - u_rel)
+// it would move with the water, and the same loads plan it with its speed as before.
+TEST(ContactPlanner, ABodyAContactStoppedIsPlannedWithTheDriftTheWaterGivesItBack) {
+  BodySet bodies;
+  bodies.add(BodySpec{.position = {0, 2.5}});
+  const double K = 100.0;  // [kg/s]
+  bodies.drag_rate[0] = K;
+  bodies.drag_force[0] = Vec2(0.0, -0.05 * K);
+  bodies.reaction_force[0] = bodies.drag_force[0];
+  bodies.flow_velocity[0] = Vec2(0.0, -1.5);
+  ContactPlanner planner;
+  const ContactSchedule stopped = planner.plan(bodies, bank_at_zero(), 1.0, ContactConfig{});
+  ASSERT_EQ(stopped.groups.size(), 1u);
+  EXPECT_EQ(stopped.groups[0].intervals, 9);
+  bodies.velocity[0] = Vec2(0.0, -1.45);  // drifting: 1.5 * 1.45 m again, from its own speed
+  const ContactSchedule drifting = planner.plan(bodies, bank_at_zero(), 1.0, ContactConfig{});
+  ASSERT_EQ(drifting.groups.size(), 1u);
+  EXPECT_EQ(drifting.groups[0].intervals, 9);
+  bodies.flow_velocity[0] = Vec2(0.0, -0.05);  // a slow flow: neither drift nor reach
+  bodies.velocity[0] = Vec2::Zero();
+  EXPECT_TRUE(planner.plan(bodies, bank_at_zero(), 1.0, ContactConfig{}).groups.empty());
+}
+
 // Brute force: i and j linked when their footprint boxes are within the closing distance (the
 // planner's formula, written out again here); the linked bodies, and the components (by
 // depth-first search) of the links that need more than one interval (no accelerations here:

@@ -221,5 +221,36 @@ TEST(FvFlowField, BodyDragIsImplicitAndReportsWhatTheWaterTook) {
   }
 }
 
+// The same exchange over several sub-steps, with one time level and with three (the drag after
+// friction in each cell's own step, local_time_steps.cpp): before the waves the body raises
+// reach the walls, only the drag changes the water's momentum (the fluxes of a flat basin
+// cancel), so the water's momentum is minus what the field reports times the time, to
+// round-off.
+TEST(FvFlowField, BodyDragOverSubStepsAndTimeLevelsReportsWhatTheWaterTook) {
+  const Mesh mesh = make_rectangle_mesh({0.0, 0.0, 20.0, 8.0, 20, 8, true});
+  for (const int levels : {1, 3}) {
+    Case c = test::closed_basin_case(1.0);
+    c.flow.fv.time_levels = levels;
+    FvEngine engine(mesh, c);
+    engine.initialize();
+    BodyReaction r{Vec2(10.2, 4.1), Vec2(1.5, 0.6), 0.3, Vec2::Zero()};
+    r.drag_rate = 4.0e3;           // [kg/s]
+    r.velocity = Vec2(0.8, -0.3);  // [m/s]
+    engine.field().set_body_reactions({r});
+    const double span = 2.0 * engine.solver().courant_step();  // [s]
+    engine.step(span);
+    ASSERT_GE(engine.solver().sub_steps().count, 2) << levels << " levels";
+    const CellMesh& cells = engine.solver().cells();
+    const ConservedState& U = engine.solver().state();
+    Vec2 momentum = Vec2::Zero();  // [kg m/s]
+    for (int i = 0; i < cells.cell_count; ++i)
+      momentum += c.flow.water_density * cells.area[i] * Vec2(U.hu[i], U.hv[i]);
+    const Vec2 exchanged = engine.field().exchanged_forces().at(0);
+    EXPECT_GT(momentum.dot(r.velocity), 0.5 * r.drag_rate * span * r.velocity.squaredNorm());
+    EXPECT_NEAR((exchanged * span + momentum).norm(), 0.0, 1e-12 * momentum.norm())
+        << levels << " levels";
+  }
+}
+
 }  // namespace
 }  // namespace flotsam
