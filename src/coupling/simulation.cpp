@@ -273,8 +273,7 @@ void Simulation::hand_bodies_to_flow() {
     // accelerate), and the drag goes as its law, K and u_p (model.md "Two-way coupling").
     const Vec2 added =
         bodies_.added_mass[i] * (bodies_.fluid_acceleration[i] - bodies_.mean_acceleration[i]);
-    reactions.push_back({footprints.back(), -added, bodies_.drag_force[i], bodies_.drag_rate[i],
-                         bodies_.velocity[i]});
+    reactions.push_back({footprints.back(), -added, bodies_.drag_rate[i], bodies_.velocity[i]});
     reaction_bodies_.push_back(i);
   }
   flow_->mark_debris(footprints);

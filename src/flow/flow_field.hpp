@@ -31,9 +31,8 @@ struct BodyFootprint {
 /// -F_x = -F_drag - C_a m_f (Du_f/Dt - du_p/dt). The drag is handed over as its law, so that an
 /// engine may apply it implicitly at the water's own velocity (model.md "Two-way coupling").
 struct BodyReaction : BodyFootprint {
-  Vec2 force;  // -C_a m_f (Du_f/Dt - du_p/dt): the added mass's part, on the water [N]
-  Vec2 drag = Vec2::Zero();      // F_drag = K (u_f - u_p) on the body, at its state now [N]
-  double drag_rate = 0.0;        // K [kg/s]
+  Vec2 force;              // -C_a m_f (Du_f/Dt - du_p/dt): the added mass's part, on the water [N]
+  double drag_rate = 0.0;  // K [kg/s]: F_drag = K (u_f - u_p) on the body
   Vec2 velocity = Vec2::Zero();  // u_p [m/s]
 };
 

@@ -22,6 +22,7 @@ struct BodyDrag {
   std::vector<Vec2> target;         // b_i [m^2/s^2] per cell
   std::vector<Vec2> velocity_time;  // int u^{n+1} dt where the drag acted [m]
   std::vector<double> time;         // int dt where it acted [s]
+  std::vector<int> cells;           // the cells under bodies (a > 0), ascending
 
   bool empty() const { return rate.empty(); }
   /// Per cell a and b as above, and zero integrals; n cells.

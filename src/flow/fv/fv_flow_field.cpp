@@ -141,6 +141,9 @@ void FvFlowField::set_body_reactions(const std::vector<BodyReaction>& reactions)
     }
     shares_.close_body();
   }
+  drag.cells = shares_.cell;  // the cells under any body, each once
+  std::sort(drag.cells.begin(), drag.cells.end());
+  drag.cells.erase(std::unique(drag.cells.begin(), drag.cells.end()), drag.cells.end());
   drag_start_ = solver_.time();
   solver_.set_cell_forces(reactions.empty() ? std::vector<Vec2>{} : std::move(forces));
   solver_.set_body_drag(reactions.empty() ? BodyDrag{} : std::move(drag));

@@ -366,11 +366,10 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) con
   U.hv[i] *= factor;
 }
 
-// The bodies' drag after friction (body_drag.hpp).
+// The bodies' drag after friction (body_drag.hpp), in the cells under them only: a few among
+// many, each on its own (the order does not change a bit).
 void FiniteVolumeSolver::apply_body_drag(ConservedState& U, double dt) {
-  if (body_drag_.empty()) return;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < cells_.cell_count; ++i) body_drag_.apply(U, i, dt, dry_depth_);
+  for (const int i : body_drag_.cells) body_drag_.apply(U, i, dt, dry_depth_);
 }
 
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
