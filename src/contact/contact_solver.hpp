@@ -6,8 +6,8 @@
 // their velocities before the contacts.
 //
 //   sequential_impulses  Box2D v2.4: Gauss-Seidel sweeps on the velocities per island, the poses
-//                        moved on by h (u_after - u_before), then a position stage
-//                        (sequential_impulses.hpp).
+//                        put at x_0 + h u_after (x_0: the interval's start), then a position
+//                        stage (sequential_impulses.hpp).
 //   soft_step            Box2D v3: sub-steps with soft contacts, relaxed, restitution last, all
 //                        contacts at once in colours (soft_step.hpp).
 #include <memory>
@@ -20,11 +20,6 @@
 
 namespace flotsam {
 
-struct BodyVelocities {
-  std::vector<Vec2> linear;     // u [m/s]
-  std::vector<double> angular;  // omega [rad/s]
-};
-
 class ContactSolver {
  public:
   virtual ~ContactSolver() = default;
@@ -35,12 +30,13 @@ class ContactSolver {
   virtual double margin_in_slops() const = 0;
 
   /// Resolves `contacts` (grouped by `islands`): new velocities, and poses moved over
-  /// intervals[i] accordingly. `start` holds the velocities the bodies had at the start of
-  /// their interval, before its forces (the present ones where not known). Returns the most
-  /// velocity sweeps a group of contacts took.
+  /// intervals[i] accordingly, from `start_pose`, the poses the bodies had at the start of their
+  /// interval. `start` holds the velocities they had then, before its forces (the present ones
+  /// where not known). Returns the most velocity sweeps a group of contacts took.
   virtual int solve(std::vector<ContactConstraint>& contacts, const Islands& islands,
                     BodySet& bodies, const SolverMasses& masses,
-                    const std::vector<double>& intervals, const BodyVelocities& start) = 0;
+                    const std::vector<double>& intervals, const BodyVelocities& start,
+                    const BodyPoses& start_pose) = 0;
 
   /// Puts back the velocities and poses the last solve() started from.
   virtual void undo(BodySet& bodies) = 0;

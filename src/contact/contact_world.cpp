@@ -69,7 +69,7 @@ ContactWorld::ContactWorld(const ContactConfig& config, double added_mass_coeffi
       margin_(solver_->margin_in_slops()),
       sleep_(config.sleep_time, config.sleep_speed) {}
 
-// The solve moves each body on by h times its change of velocity. Detection only saw the gaps
+// The solve moves each body by about h times its change of velocity. Detection only saw the gaps
 // within its margin (2 slop), so a body pushed further than that by a neighbour (a log struck
 // from upstream, pushed towards a pier a few centimetres away) may be moved into a contact
 // nobody detected, and across a pier in one interval. Then the interval is solved again from
@@ -117,23 +117,38 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
     after_.linear[i] = bodies.velocity[i];
     after_.angular[i] = bodies.angular_velocity[i];
     after_known_[i] = 1;
+    pose_after_.position[i] = bodies.position[i];
+    pose_after_.angle[i] = bodies.angle[i];
+    pose_known_[i] = 1;
   }
 }
 
 // The velocities the bodies of this step had at the start of the interval: those this world
 // left them with at the end of their last interval, when they were in it (the body step has
 // since added the forces' change); else the present ones (as if the forces acted at the start).
+// Their poses then: where this world left them, or where plan() found them at the start of the
+// flow step; else as if they had moved with their present velocities, x - h u.
 // Only the step's bodies' entries are written (the others are read by nobody).
 void ContactWorld::find_interval_start(const BodySet& bodies) {
   const auto n = static_cast<std::size_t>(bodies.size());
   after_.linear.resize(n, Vec2::Zero());
   after_.angular.resize(n, 0.0);
   after_known_.resize(n, 0);
+  pose_after_.position.resize(n, Vec2::Zero());
+  pose_after_.angle.resize(n, 0.0);
+  pose_known_.resize(n, 0);
   interval_start_.linear.resize(n);
   interval_start_.angular.resize(n);
+  interval_pose_.position.resize(n);
+  interval_pose_.angle.resize(n);
   for (const int i : in_step_) {
     interval_start_.linear[i] = after_known_[i] ? after_.linear[i] : bodies.velocity[i];
     interval_start_.angular[i] = after_known_[i] ? after_.angular[i] : bodies.angular_velocity[i];
+    const double h = lengths_[i];  // [s]
+    interval_pose_.position[i] = pose_known_[i] ? pose_after_.position[i]
+                                                : Vec2(bodies.position[i] - h * bodies.velocity[i]);
+    interval_pose_.angle[i] =
+        pose_known_[i] ? pose_after_.angle[i] : bodies.angle[i] - h * bodies.angular_velocity[i];
   }
 }
 
@@ -183,6 +198,9 @@ bool ContactWorld::grow_reach(const BodySet& bodies) {
 ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments& walls,
                                    double dt) {
   ContactSchedule schedule = planner_.plan(bodies, walls, dt, config_);
+  pose_after_.position = bodies.position;  // where every body's first interval starts
+  pose_after_.angle = bodies.angle;
+  pose_known_.assign(static_cast<std::size_t>(bodies.size()), 1);
   std::vector<char> free(static_cast<std::size_t>(bodies.size()), 0);
   for (const int i : schedule.free) free[i] = 1;
   after_known_.resize(free.size(), 0);
@@ -485,7 +503,7 @@ void ContactWorld::solve(BodySet& bodies) {
   profile_.sleeping_islands = sleep_.set_aside(contacts_, islands_, resting_, bodies);
   profile_.sleeping_contacts = static_cast<int>(resting_.size());
   if (profile_.sleeping_islands > 0) islands_.group(contacts_, bodies.size());
-  prepare_contacts(contacts_, bodies, masses_, config_, lengths_);
+  prepare_contacts(contacts_, bodies, masses_, config_, lengths_, interval_pose_);
   profile_.islands = islands_.count();
   profile_.largest_island = islands_.largest();
   velocity_before_.resize(bodies.velocity.size());
@@ -494,8 +512,8 @@ void ContactWorld::solve(BodySet& bodies) {
     velocity_before_[i] = bodies.velocity[i];
     angular_velocity_before_[i] = bodies.angular_velocity[i];
   }
-  profile_.velocity_sweeps =
-      solver_->solve(contacts_, islands_, bodies, masses_, lengths_, interval_start_);
+  profile_.velocity_sweeps = solver_->solve(contacts_, islands_, bodies, masses_, lengths_,
+                                            interval_start_, interval_pose_);
   profile_.solve = clock.lap();
 }
 

@@ -55,7 +55,8 @@ class ContactWorld {
   explicit ContactWorld(const ContactConfig& config, double added_mass_coefficient = 0.5);
 
   /// Detects the contacts of the current poses and resolves them: velocities get the impulses,
-  /// poses move on by `interval` times the velocity change, then the overlap correction.
+  /// poses are put where the interval started moved on by `interval` times the new velocity,
+  /// then the overlap correction.
   /// `interval` h [s] is the time the bodies have just been moved over since the last call (one
   /// contact interval of BodyIntegrator::advance, not the whole flow step): the move redoes that
   /// interval with the new velocities, and gaps may close within the next h (speculative
@@ -96,6 +97,7 @@ class ContactWorld {
     contacts_ = std::move(contacts);
     sweep_.restore(std::move(sweep_order), sweep_axis);
     after_known_.clear();
+    pose_known_.clear();
     sleep_.wake_all();
   }
   /// Whether body i is asleep (contact/island_sleep.hpp).
@@ -148,6 +150,10 @@ class ContactWorld {
   BodyVelocities after_;           // each body's velocities at the end of its last step here
   std::vector<char> after_known_;  // 1 while after_ holds the start of the body's next interval
   BodyVelocities interval_start_;  // this step's bodies at the start of their interval
+  BodyPoses pose_after_;           // each body's pose at the end of its last step here, or at
+                                   // the start of the flow step (plan())
+  std::vector<char> pose_known_;   // 1 while pose_after_ holds the start of its next interval
+  BodyPoses interval_pose_;        // this step's bodies' poses at the start of their interval
   std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
   std::vector<int> grown_;         // the bodies whose reach_ the last step grew
   std::vector<double> lengths_;    // h per body [s]

@@ -7,13 +7,16 @@
 //   v_n = [ (u_A + omega_A k x r_A) - (u_B + omega_B k x r_B) ] . n                  (M-9), (P-25)
 //   K   = 1/m_A + 1/m_B + (r_A x n)^2 / I_A + (r_B x n)^2 / I_B
 //
-// The impulse j n that brings v_n to the target v* is j = -(v_n - v*) / K. The target:
+// The impulse j n that brings v_n to the target v* is j = -(v_n - v*) / K. The poses will be put
+// at x_0 + h u (x_0: where the interval h started, sequential_impulses.cpp), so the target is set
+// from the separation there, s_0 = s - n . (d_A - d_B), the detected s less what the free move
+// closed (d: the point's move since x_0):
 //
-//   s > 0 (a gap, within the detection margin):  v* = -s / h   (speculative: the bodies may
-//          close the gap during the next interval h, no faster; a gap is never held open)
+//   s > 0 (a gap, within the detection margin):  v* = -max(min(s, s_0), 0) / h   (speculative:
+//          it may close during the interval, no faster, and is never held open)
 //   s <= 0, a new impact approaching faster than the restitution threshold:  v* = -e v_n^0
 //   s <= 0 otherwise (resting: the point carried an impulse last interval, or a slow approach):
-//          v* = 0
+//          v* = -max(s_0, 0) / h   (held where it is, or brought to the face it crossed)
 //
 // with v_n^0 the normal velocity before the solve. For one new contact starting from
 // v_n = v_n^0 this is (M-9)'s j = -(1 + e) v_n^0 / K. Restitution is never applied to a resting
@@ -78,6 +81,16 @@ struct ContactConstraint {
   Vec2 local_plane_point = Vec2::Zero();  // [m]
 };
 
+struct BodyVelocities {
+  std::vector<Vec2> linear;     // u [m/s]
+  std::vector<double> angular;  // omega [rad/s]
+};
+
+struct BodyPoses {
+  std::vector<Vec2> position;  // x [m]
+  std::vector<double> angle;   // theta [rad]
+};
+
 /// Inverse masses and inertias used by the solver (added mass included when configured).
 struct SolverMasses {
   std::vector<double> inverse_mass;     // 1/m [1/kg], 0 for gone bodies
@@ -93,11 +106,11 @@ void set_solver_masses(SolverMasses& masses, const BodySet& bodies, const Contac
                        double added_mass_coefficient, std::span<const int> listed);
 
 /// Fills the effective masses, approach and target velocities of every point; `intervals[i]` h
-/// [s] is the time over which the solved velocities will move body i (speculative target: the
-/// longer of the two bodies').
+/// [s] is the time over which the solved velocities will move body i from `start[i]`, its pose
+/// where the interval started (speculative target: the longer of the two bodies' h).
 void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodies,
                       const SolverMasses& masses, const ContactConfig& config,
-                      const std::vector<double>& intervals);
+                      const std::vector<double>& intervals, const BodyPoses& start);
 
 /// Applies the accumulated impulses the points start with (warm start from the last step).
 void warm_start_contacts(std::span<const ContactConstraint> contacts, BodySet& bodies,

@@ -14,16 +14,18 @@ bool in_parallel(const std::vector<ContactConstraint>& contacts, const Islands& 
 }  // namespace
 
 // The interval that brought the bodies here moved them with their velocities before the
-// contacts acted; the impulses belong to the same interval, so the poses are moved on by h times
-// the change of velocity (x_n+1 = x_n + h u_n+1, semi-implicit Euler). A resting jam pushed by a
-// steady force then does not creep into its supports by F h^2 / m per interval. h must be the
-// interval the bodies have just been moved over, not a longer step: the move would otherwise
-// be too long by the ratio (and a bounce could carry a body through a wall).
+// contacts acted; the impulses belong to the same interval, so the poses are put where the
+// interval started moved on by h times the new velocity (x_1 = x_0 + h u_1, semi-implicit Euler,
+// as Box2D). The targets were set for that move (prepare_contacts: a gap's separation at the
+// interval's start): a body held against a face stays there (moving it on by h (u_1 - u^-), the
+// change of velocity alone, backed it off by F h^2 / 2m, the part of the free move the steady
+// force made, and took it out of contact one interval in three), and a resting jam does not
+// creep into its supports. h must be the interval the bodies have just been moved over.
 // Each island is solved on its own, the islands in parallel (contact/islands.hpp).
 int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Islands& islands,
                               BodySet& bodies, const SolverMasses& masses,
-                              const std::vector<double>& intervals,
-                              const BodyVelocities& /*start*/) {
+                              const std::vector<double>& intervals, const BodyVelocities& /*start*/,
+                              const BodyPoses& start_pose) {
   // The bodies of the contacts: the only ones whose velocities the solve changes.
   const auto n = static_cast<std::size_t>(bodies.size());
   touched_.resize(n, 0);
@@ -36,11 +38,13 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
       moved_.push_back(i);
     }
   }
-  velocity_before_.resize(n), angular_velocity_before_.resize(n), intervals_.resize(n);
+  velocity_before_.resize(n), angular_velocity_before_.resize(n);
+  pose_before_.position.resize(n), pose_before_.angle.resize(n);
   for (const int i : moved_) {
     velocity_before_[i] = bodies.velocity[i];
     angular_velocity_before_[i] = bodies.angular_velocity[i];
-    intervals_[i] = intervals[i];
+    pose_before_.position[i] = bodies.position[i];
+    pose_before_.angle[i] = bodies.angle[i];
   }
   const std::vector<int>& order = islands.largest_first();
   const int count = islands.count();
@@ -55,16 +59,17 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
     for (int k = 0; k < count; ++k) sweeps = std::max(sweeps, solve_island(k));
   }
   for (const int i : moved_) {
-    bodies.position[i] += intervals[i] * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] += intervals[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    if (masses.inverse_mass[i] == 0.0 && masses.inverse_inertia[i] == 0.0) continue;  // fixed
+    bodies.position[i] = start_pose.position[i] + intervals[i] * bodies.velocity[i];
+    bodies.angle[i] = start_pose.angle[i] + intervals[i] * bodies.angular_velocity[i];
   }
   return sweeps;
 }
 
 void SequentialImpulses::undo(BodySet& bodies) {
   for (const int i : moved_) {
-    bodies.position[i] -= intervals_[i] * (bodies.velocity[i] - velocity_before_[i]);
-    bodies.angle[i] -= intervals_[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    bodies.position[i] = pose_before_.position[i];
+    bodies.angle[i] = pose_before_.angle[i];
     bodies.velocity[i] = velocity_before_[i];
     bodies.angular_velocity[i] = angular_velocity_before_[i];
   }

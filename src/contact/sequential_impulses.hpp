@@ -1,7 +1,7 @@
 #pragma once
 // Box2D v2.4's contact solver (impulse_solver.hpp) behind the ContactSolver interface: each
-// island's velocity sweeps until they settle, the islands in parallel; the poses moved on by
-// h (u_after - u_before); then the position stage per island.
+// island's velocity sweeps until they settle, the islands in parallel; the poses put at
+// x_0 + h u_after (x_0 where the interval started); then the position stage per island.
 #include "contact/contact_solver.hpp"
 
 namespace flotsam {
@@ -13,7 +13,7 @@ class SequentialImpulses final : public ContactSolver {
   double margin_in_slops() const override { return 2.0; }
   int solve(std::vector<ContactConstraint>& contacts, const Islands& islands, BodySet& bodies,
             const SolverMasses& masses, const std::vector<double>& intervals,
-            const BodyVelocities& start) override;
+            const BodyVelocities& start, const BodyPoses& start_pose) override;
   void undo(BodySet& bodies) override;
   double correct_positions(std::vector<ContactConstraint>& contacts, const Islands& islands,
                            BodySet& bodies, const SolverMasses& masses) override;
@@ -26,7 +26,7 @@ class SequentialImpulses final : public ContactSolver {
   std::vector<char> touched_;
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
-  std::vector<double> intervals_;                // h per body [s]
+  BodyPoses pose_before_;                        // x [m], theta [rad]
 };
 
 }  // namespace flotsam

@@ -323,10 +323,11 @@ void SoftStep::fetch_bodies(const Wide& c) const {
 
 int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*islands*/,
                     BodySet& bodies, const SolverMasses& masses,
-                    const std::vector<double>& intervals, const BodyVelocities& start) {
+                    const std::vector<double>& intervals, const BodyVelocities& start,
+                    const BodyPoses& start_pose) {
   const bool threads = contacts.size() >= parallel_contacts && choice_.threads();
   const auto start_time = std::chrono::steady_clock::now();
-  prepare(contacts, bodies, masses, intervals, start, threads);
+  prepare(contacts, bodies, masses, intervals, start, start_pose, threads);
   const int substeps = config_.substeps;
   double largest = 0.0;  // [m] overlap at the end
   Body* body = body_.data();
@@ -369,11 +370,11 @@ int SoftStep::solve(std::vector<ContactConstraint>& contacts, const Islands& /*i
 }
 
 // Flat copies of the contacts in colour order, four to a Wide, with their soft coefficients
-// (S-2), and of the bodies they touch, each put back where the interval started: D = -h u^0,
-// Theta = -h omega^0.
+// (S-2), and of the bodies they touch, each put back where the interval started: D = x_0 - x_1,
+// Theta = theta_0 - theta_1.
 void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const BodySet& bodies,
                        const SolverMasses& masses, const std::vector<double>& intervals,
-                       const BodyVelocities& start, bool threads) {
+                       const BodyVelocities& start, const BodyPoses& start_pose, bool threads) {
   const int n = bodies.size(), wall = n;
   const auto slots = static_cast<std::size_t>(n + 1);
   movable_.resize(slots);
@@ -460,8 +461,8 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
 #pragma omp for schedule(static)
     for (int m = 0; m < touched; ++m) {
       const int i = touched_[static_cast<std::size_t>(m)];
-      // Back to the pose the interval started from (x_1 = x_0 + h u^0), the velocity before the
-      // forces, and the forces' share of each sub-step.
+      // Back to the pose the interval started from, the velocity before the forces, and the
+      // forces' share of each sub-step.
       const double h = intervals[i], substeps = config_.substeps;  // [s], [-]
       BodyStep& s = body_step_[i];
       Body& b = body_[i];
@@ -469,8 +470,8 @@ void SoftStep::prepare(const std::vector<ContactConstraint>& contacts, const Bod
       s.spin_gain = (bodies.angular_velocity[i] - start.angular[i]) / substeps;
       b.velocity = start.linear[i];
       b.spin = start.angular[i];
-      b.shift = -h * bodies.velocity[i];
-      s.turn = -h * bodies.angular_velocity[i];
+      b.shift = start_pose.position[i] - bodies.position[i];
+      s.turn = start_pose.angle[i] - bodies.angle[i];
       b.rotation = {std::cos(s.turn), std::sin(s.turn)};
       s.step = h / config_.substeps;
       inverse_mass_[i] = masses.inverse_mass[i];

@@ -6,7 +6,8 @@
 // The bodies arrive moved over h with their velocities u^0 before the contacts. The interval is
 // redone in n sub-steps of h_s = h / n from the poses it started from, each carried as a
 // displacement D and a turn Theta from the detected pose (anchors: the separations follow the
-// bodies within the interval without detecting again), D = -h u^0, Theta = -h omega^0 at the start:
+// bodies within the interval without detecting again), D = x_0 - x_1, Theta = theta_0 - theta_1
+// at the start (x_0, theta_0: the pose the interval started from; x_1, theta_1: the detected one):
 //
 //   for each sub-step: warm start (this sub-step's impulses of the last interval),
 //                      solve (soft contacts, with bias), move the poses by h_s u, relax (no bias)
@@ -52,7 +53,7 @@ class SoftStep final : public ContactSolver {
   double margin_in_slops() const override { return 16.0; }
   int solve(std::vector<ContactConstraint>& contacts, const Islands& islands, BodySet& bodies,
             const SolverMasses& masses, const std::vector<double>& intervals,
-            const BodyVelocities& start) override;
+            const BodyVelocities& start, const BodyPoses& start_pose) override;
   void undo(BodySet& bodies) override;
   /// Nothing left to do: the sub-steps pushed the overlaps out. Returns the largest overlap at
   /// the end of the last sub-step (S-1).
@@ -122,7 +123,7 @@ class SoftStep final : public ContactSolver {
  private:
   void prepare(const std::vector<ContactConstraint>& contacts, const BodySet& bodies,
                const SolverMasses& masses, const std::vector<double>& intervals,
-               const BodyVelocities& start, bool threads);
+               const BodyVelocities& start, const BodyPoses& start_pose, bool threads);
   void store(std::vector<ContactConstraint>& contacts, BodySet& bodies, bool threads);
   void relax(std::size_t w, int substep);
   void move_pose(int body);

@@ -282,9 +282,9 @@ namespace {
 // a jam"): the bodies' wetted heights come from the last contact solve and are kept in the
 // checkpoint, so the restarted run goes on bit for bit (finite volumes, the deck's hydraulics).
 // The logs (tops 0.15 m above the water) stop against the deck (soffit 0.1 m above it) by t = 8 s
-// and stay; the checkpoint at 15 s holds all four acting over the jam's thickness. (A body held
-// against a face is out of contact at the end of some steps, docs/model.md "Pose update with the
-// contact velocities": here from 17 s on, so the thickness is checked at the checkpoint.)
+// and stay there, in contact every step (docs/model.md "Pose update from the interval's start":
+// before, one let go of the deck at 11 s), all four acting over the jam's thickness, in the
+// checkpoint at 15 s too.
 Case jam_at_deck_case(double end) {
   Case c = test::straight_channel_case("deck", 30.0, 2.0);
   c.flow.engine = FlowEngineKind::fv;
@@ -310,13 +310,20 @@ TEST(Restart, AJamAgainstADeckGoesOnWithItsThicknessBitForBit) {
   Simulation whole(jam_at_deck_case(30.0), mesh, options_in(base / "whole", false));
   whole.initialize();
   int thick_at_restart = 0;  // bodies acting over their jam's T at 15 s: in the checkpoint
+  double jammed_from = -1.0, let_go_at = -1.0;  // [s] all four thick; one of them not, after
   while (!whole.done()) {
     whole.step();
     int thick = 0;
     for (int i = 0; i < whole.bodies().size(); ++i)
       thick += whole.bodies().wetted_height[i] > whole.bodies().draft[i];
     if (std::abs(whole.time() - 15.0) < 1e-9) thick_at_restart = thick;
+    if (thick == 4 && jammed_from < 0.0) jammed_from = whole.time();
+    if (thick < 4 && jammed_from >= 0.0 && let_go_at < 0.0) let_go_at = whole.time();
   }
+  // Held against the deck, the raft stays in contact with it every step (no back-off).
+  EXPECT_GE(jammed_from, 0.0);
+  EXPECT_LT(let_go_at, 0.0) << "jammed from " << jammed_from << " s, one log let go at "
+                            << let_go_at << " s";
   whole.write_final_output();
   Simulation(jam_at_deck_case(15.0), mesh, options_in(base / "split", false)).run();
   Simulation rest(jam_at_deck_case(30.0), mesh, options_in(base / "split", true));
