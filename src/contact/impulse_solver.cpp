@@ -162,12 +162,12 @@ void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodi
       // body approaching it ends the interval short of the face by what the free move closed,
       // and closes the rest in the next one (letting it close s_0 at once left fast-turning
       // logs up to 1.5 % of their width deep in a pier: the turn is linearised).
-      const double start_separation = p.separation - (point_move(bodies, start, c.a, p.r_a) -
-                                                      point_move(bodies, start, c.b, p.r_b))
-                                                         .dot(c.normal);  // [m]
-      const double closable = p.separation > 0.0                          // [m] within the interval
-                                  ? std::min(p.separation, start_separation)
-                                  : start_separation;
+      const double opened =
+          (point_move(bodies, start, c.a, p.r_a) - point_move(bodies, start, c.b, p.r_b))
+              .dot(c.normal);                                 // [m] by the free move
+      const double start_separation = p.separation - opened;  // s_0 [m]
+      const double closable =
+          p.separation > 0.0 ? std::min(p.separation, start_separation) : start_separation;  // [m]
       if (p.separation <= 0.0 && !p.resting &&
           p.approach_velocity < -config.restitution_threshold) {
         p.target_velocity = -config.restitution * p.approach_velocity;  // v* = -e v_n^0 (M-9)

@@ -14,6 +14,7 @@
 
 #include "../support/thrown_jam.hpp"
 #include "contact/jam_scene.hpp"
+#include "core/constants.hpp"
 
 namespace flotsam {
 namespace {
@@ -43,6 +44,61 @@ TEST(ContactWorld, AStruckLogIsNotPushedIntoAPierItsMarginDidNotReach) {
   EXPECT_LT(gap, 0.02 + 1e-12);
   EXPECT_LE(bodies.velocity[0].y(), 0.0);
 }
+
+// A log pushed against a wall by a steady force (as a jam's drag pushes it against a deck) is
+// held there: each flow step is planned, the body step moves it over the interval with the force
+// (x += h u + a h^2 / 2, u += a h), and the contact stage puts it where the interval started
+// moved on by its new velocity (docs/model.md "Pose update from the interval's start"). Exact
+// answer: once at the wall, it stays in contact every interval, at rest, its pose unchanged to
+// round-off (the soft step's once its spring has settled). (Moving it on by h times the change of
+// velocity alone backed it off by a h^2 / 2 = 0.5 m per 1 s interval and took it out of contact.)
+// Both solvers.
+class HeldAgainstAWall : public ::testing::TestWithParam<ContactSolverKind> {};
+
+TEST_P(HeldAgainstAWall, StaysInContactAtRestEveryInterval) {
+  BoundarySegments walls;
+  walls.group_names = {"deck"};
+  walls.add_segment({10.0, -20.0}, {10.0, 20.0}, 0);  // a face across x = 10 m, facing -x
+  walls.build_grid(2.0);
+  BodySet bodies;  // a log across the flow, 0.5 m thick, its front face 1 cm from the wall
+  bodies.add(BodySpec{.length = 10.0, .width = 0.5, .position = {9.74, 0.0}, .angle = pi / 2});
+  ContactConfig config;
+  config.solver = GetParam();
+  config.restitution = 0.0;
+  ContactWorld world(config);
+  constexpr double dt = 1.0, a = 1.0;  // [s] flow step, [m/s^2] the force's acceleration along x
+  // The soft step's spring pushes the slop's overlap out over some steps (5e-5 m, then halving).
+  const int settled = config.solver == ContactSolverKind::soft_step ? 25 : 5;
+  Vec2 held = Vec2::Zero();
+  int touching = 0;
+  for (int step = 0; step < 40; ++step) {
+    bodies.drag_force[0] = bodies.reaction_force[0] = Vec2(bodies.mass[0] * a, 0.0);  // [N]
+    const ContactSchedule plan = world.plan(bodies, walls, dt);
+    ASSERT_TRUE(plan.free.empty()) << "step " << step;  // the wall is within its reach
+    const int K = plan.groups.empty() ? 1 : plan.groups.front().intervals;
+    const double h = dt / K;  // [s] as BodyIntegrator::advance: the group's intervals, then all
+    for (int k = 0; k < K; ++k) {
+      bodies.position[0] += h * bodies.velocity[0] + Vec2(0.5 * a * h * h, 0.0);
+      bodies.velocity[0] += Vec2(a * h, 0.0);
+      world.step(bodies, walls, h, k + 1 < K ? &plan.groups.front().bodies : &plan.at_end);
+    }
+    if (step < 5) continue;  // reaching the wall
+    EXPECT_FALSE(world.contacts().empty()) << "step " << step;
+    touching += !world.contacts().empty();
+    if (step > settled) {
+      EXPECT_NEAR(bodies.velocity[0].norm(), 0.0, 1e-9) << "step " << step;
+      EXPECT_NEAR((bodies.position[0] - held).norm(), 0.0, 1e-9) << "step " << step;
+    }
+    held = bodies.position[0];
+  }
+  EXPECT_EQ(touching, 35);
+  // Its face at the wall, within 3 slop (the soft step's spring holds it 2.2 slop in).
+  EXPECT_NEAR(held.x(), 9.75, 3.0 * config.allowed_overlap * 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, HeldAgainstAWall,
+                         ::testing::Values(ContactSolverKind::sequential_impulses,
+                                           ContactSolverKind::soft_step));
 
 // Islands are solved in parallel (contact/islands.hpp); none reads another's bodies and each keeps
 // its contacts' order, so the result is the same, bit for bit, on 1 and 2 threads. The scene:
