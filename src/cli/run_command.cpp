@@ -7,12 +7,31 @@
 
 #include "cli/commands.hpp"
 #include "cli/logging.hpp"
+#include "core/error.hpp"
 #include "coupling/simulation.hpp"
+#include "ensemble/rank_world.hpp"
 #include "io/case_estimate.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 
 namespace flotsam::cli {
+namespace {
+
+// One flood does not split over MPI ranks yet (issue 41): under `mpirun -n N` every rank would
+// run the whole case into the same folder. Refused on every rank, before anything is written.
+void refuse_ranks(const std::string& case_file) {
+  if (!RankWorld::launched_by_mpirun()) return;
+  const RankWorld world;
+  if (world.size() <= 1) return;
+  throw_input_error(
+      "flotsam run was started on {} MPI ranks: one run does not split over ranks (each rank "
+      "would run the whole case into the same folder). Run it without mpirun, on the machine's "
+      "threads (OMP_NUM_THREADS); an ensemble (a case with `ensemble:`) spreads its members over "
+      "the ranks: mpirun -n {} flotsam ensemble {}",
+      world.size(), world.size(), case_file);
+}
+
+}  // namespace
 
 void add_run_command(CLI::App& app) {
   struct Options {
@@ -56,6 +75,7 @@ void add_run_command(CLI::App& app) {
                 "fewer would be faster on a shared machine (by default each step takes the "
                 "count measured fastest)");
   cmd->callback([options] {
+    refuse_ranks(options->case_file);
     Case c = read_case(options->case_file);
     if (options->end > 0) c.time.end = options->end;
     const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
