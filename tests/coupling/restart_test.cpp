@@ -282,9 +282,8 @@ namespace {
 // a jam"): the bodies' wetted heights come from the last contact solve and are kept in the
 // checkpoint, so the restarted run goes on bit for bit (finite volumes, the deck's hydraulics).
 // The logs (tops 0.15 m above the water) stop against the deck (soffit 0.1 m above it) by t = 8 s
-// and stay there, in contact every step (docs/model.md "Pose update from the interval's start":
-// before, one let go of the deck at 11 s), all four acting over the jam's thickness, in the
-// checkpoint at 15 s too.
+// and stay there, in contact every step (docs/model.md "Pose update from the interval's start"),
+// all four acting over the jam's thickness, in the checkpoint at 15 s too.
 Case jam_at_deck_case(double end) {
   Case c = test::straight_channel_case("deck", 30.0, 2.0);
   c.flow.engine = FlowEngineKind::fv;

@@ -21,9 +21,7 @@
 //   under the thicker jam), and each more than 0.8 of the drag (M-6) the jammed bodies would take
 //   at rest in the flow at the end (measured 0.87 and 0.90; the reference is one sample at each
 //   body's centre at the end, the exchange a 600 s mean over its footprint's cells). A body held
-//   against the deck stays against it (docs/model.md "Pose update from the interval's start");
-//   when it hovered a centimetre or two off it these were 0.80 and 0.83, the ratio 1.83 and the
-//   rise +9.6 %.
+//   against the deck stays against it (docs/model.md "Pose update from the interval's start").
 #include <gtest/gtest.h>
 
 #include <cmath>
