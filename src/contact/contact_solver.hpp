@@ -5,9 +5,9 @@
 // impulses) and resolves them, on bodies that have just been moved over their interval h_i with
 // their velocities before the contacts.
 //
-//   sequential_impulses  Box2D v2.4: Gauss-Seidel sweeps on the velocities per island, the poses
-//                        put at x_0 + h u_after (x_0: the interval's start), then a position
-//                        stage (sequential_impulses.hpp).
+//   sequential_impulses  Box2D v2.4: Gauss-Seidel sweeps on the velocities per island, the pushed
+//                        bodies' poses put at x_0 + h u_after (x_0: the interval's start), then
+//                        a position stage (sequential_impulses.hpp).
 //   soft_step            Box2D v3: sub-steps with soft contacts, relaxed, restitution last, all
 //                        contacts at once in colours (soft_step.hpp).
 #include <memory>

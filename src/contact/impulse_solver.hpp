@@ -7,10 +7,10 @@
 //   v_n = [ (u_A + omega_A k x r_A) - (u_B + omega_B k x r_B) ] . n                  (M-9), (P-25)
 //   K   = 1/m_A + 1/m_B + (r_A x n)^2 / I_A + (r_B x n)^2 / I_B
 //
-// The impulse j n that brings v_n to the target v* is j = -(v_n - v*) / K. The poses will be put
-// at x_0 + h u (x_0: where the interval h started, sequential_impulses.cpp), so the target is set
-// from the separation there, s_0 = s - n . (d_A - d_B), the detected s less what the free move
-// closed (d: the point's move since x_0):
+// The impulse j n that brings v_n to the target v* is j = -(v_n - v*) / K. A pushed body's pose
+// will be put at x_0 + h u (x_0: where the interval h started, sequential_impulses.cpp), so the
+// target is set from the separation there, s_0 = s - n . (d_A - d_B), the detected s less what
+// the free move closed (d: the point's move since x_0):
 //
 //   s > 0 (a gap, within the detection margin):  v* = -max(min(s, s_0), 0) / h   (speculative:
 //          it may close during the interval, no faster, and is never held open)

@@ -14,14 +14,16 @@ bool in_parallel(const std::vector<ContactConstraint>& contacts, const Islands& 
 }  // namespace
 
 // The interval that brought the bodies here moved them with their velocities before the
-// contacts acted; the impulses belong to the same interval, so the poses are put where the
-// interval started moved on by h times the new velocity (x_1 = x_0 + h u_1, semi-implicit Euler,
-// as Box2D). The targets were set for that move (prepare_contacts: a gap's separation at the
-// interval's start): a body held against a face stays there (moving it on by h (u_1 - u^-), the
-// change of velocity alone, backed it off by F h^2 / 2m, the part of the free move the steady
-// force made, and took it out of contact one interval in three), and a resting jam does not
-// creep into its supports. h must be the interval the bodies have just been moved over.
-// Each island is solved on its own, the islands in parallel (contact/islands.hpp).
+// contacts acted; the impulses belong to the same interval, so the poses of the bodies a contact
+// pushed are put where the interval started moved on by h times the new velocity (x_1 = x_0 +
+// h u_1, semi-implicit Euler, as Box2D); a body whose contacts carry no impulse (a gap within the
+// detection margin) keeps the pose its RKF45 sub-steps gave it. The targets were set for that move
+// (prepare_contacts: a gap's separation at the interval's start): a body held against a face stays
+// there (moving it on by h (u_1 - u^-), the change of velocity alone, backed it off by F h^2 / 2m,
+// the part of the free move the steady force made, and took it out of contact one interval in
+// three), and a resting jam does not creep into its supports. h must be the interval the bodies
+// have just been moved over. Each island is solved on its own, the islands in parallel
+// (contact/islands.hpp).
 int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Islands& islands,
                               BodySet& bodies, const SolverMasses& masses,
                               const std::vector<double>& intervals, const BodyVelocities& /*start*/,
@@ -38,7 +40,7 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
       moved_.push_back(i);
     }
   }
-  velocity_before_.resize(n), angular_velocity_before_.resize(n);
+  velocity_before_.resize(n), angular_velocity_before_.resize(n), pushed_.resize(n, 0);
   pose_before_.position.resize(n), pose_before_.angle.resize(n);
   for (const int i : moved_) {
     velocity_before_[i] = bodies.velocity[i];
@@ -58,10 +60,25 @@ int SequentialImpulses::solve(std::vector<ContactConstraint>& contacts, const Is
   } else {  // no parallel region: it costs about a microsecond even on one thread
     for (int k = 0; k < count; ++k) sweeps = std::max(sweeps, solve_island(k));
   }
+  // Bodies pushed by a contact (a point of theirs carries a normal impulse) go to x_0 + h u; the
+  // others keep the body step's pose, moved on by what a neighbour's impulse changed, if any.
+  for (const int i : moved_) pushed_[i] = 0;
+  for (const ContactConstraint& c : contacts) {
+    for (int k = 0; k < c.point_count; ++k) {
+      if (!(c.points[static_cast<std::size_t>(k)].normal_impulse > 0.0)) continue;
+      pushed_[c.a] = 1;
+      if (c.b >= 0) pushed_[c.b] = 1;
+    }
+  }
   for (const int i : moved_) {
     if (masses.inverse_mass[i] == 0.0 && masses.inverse_inertia[i] == 0.0) continue;  // fixed
-    bodies.position[i] = start_pose.position[i] + intervals[i] * bodies.velocity[i];
-    bodies.angle[i] = start_pose.angle[i] + intervals[i] * bodies.angular_velocity[i];
+    if (pushed_[i]) {
+      bodies.position[i] = start_pose.position[i] + intervals[i] * bodies.velocity[i];
+      bodies.angle[i] = start_pose.angle[i] + intervals[i] * bodies.angular_velocity[i];
+    } else {
+      bodies.position[i] += intervals[i] * (bodies.velocity[i] - velocity_before_[i]);
+      bodies.angle[i] += intervals[i] * (bodies.angular_velocity[i] - angular_velocity_before_[i]);
+    }
   }
   return sweeps;
 }

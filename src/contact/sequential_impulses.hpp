@@ -1,7 +1,8 @@
 #pragma once
 // Box2D v2.4's contact solver (impulse_solver.hpp) behind the ContactSolver interface: each
-// island's velocity sweeps until they settle, the islands in parallel; the poses put at
-// x_0 + h u_after (x_0 where the interval started); then the position stage per island.
+// island's velocity sweeps until they settle, the islands in parallel; the poses of the bodies a
+// contact pushed put at x_0 + h u_after (x_0 where the interval started); then the position stage
+// per island.
 #include "contact/contact_solver.hpp"
 
 namespace flotsam {
@@ -27,6 +28,7 @@ class SequentialImpulses final : public ContactSolver {
   std::vector<Vec2> velocity_before_;            // [m/s]
   std::vector<double> angular_velocity_before_;  // [rad/s]
   BodyPoses pose_before_;                        // x [m], theta [rad]
+  std::vector<char> pushed_;                     // 1: a contact of the body carries an impulse
 };
 
 }  // namespace flotsam
