@@ -117,9 +117,8 @@ void ContactWorld::step(BodySet& bodies, const BoundarySegments& walls, double i
     after_.linear[i] = bodies.velocity[i];
     after_.angular[i] = bodies.angular_velocity[i];
     after_known_[i] = 1;
-    pose_after_.position[i] = bodies.position[i];
-    pose_after_.angle[i] = bodies.angle[i];
-    pose_known_[i] = 1;
+    start_pose_.position[i] = bodies.position[i];  // where its next interval starts
+    start_pose_.angle[i] = bodies.angle[i];
   }
 }
 
@@ -134,21 +133,19 @@ void ContactWorld::find_interval_start(const BodySet& bodies) {
   after_.linear.resize(n, Vec2::Zero());
   after_.angular.resize(n, 0.0);
   after_known_.resize(n, 0);
-  pose_after_.position.resize(n, Vec2::Zero());
-  pose_after_.angle.resize(n, 0.0);
+  start_pose_.position.resize(n, Vec2::Zero());
+  start_pose_.angle.resize(n, 0.0);
   pose_known_.resize(n, 0);
   interval_start_.linear.resize(n);
   interval_start_.angular.resize(n);
-  interval_pose_.position.resize(n);
-  interval_pose_.angle.resize(n);
   for (const int i : in_step_) {
     interval_start_.linear[i] = after_known_[i] ? after_.linear[i] : bodies.velocity[i];
     interval_start_.angular[i] = after_known_[i] ? after_.angular[i] : bodies.angular_velocity[i];
+    if (pose_known_[i]) continue;
     const double h = lengths_[i];  // [s]
-    interval_pose_.position[i] = pose_known_[i] ? pose_after_.position[i]
-                                                : Vec2(bodies.position[i] - h * bodies.velocity[i]);
-    interval_pose_.angle[i] =
-        pose_known_[i] ? pose_after_.angle[i] : bodies.angle[i] - h * bodies.angular_velocity[i];
+    start_pose_.position[i] = bodies.position[i] - h * bodies.velocity[i];
+    start_pose_.angle[i] = bodies.angle[i] - h * bodies.angular_velocity[i];
+    pose_known_[i] = 1;  // step() keeps its end pose from now on
   }
 }
 
@@ -198,8 +195,8 @@ bool ContactWorld::grow_reach(const BodySet& bodies) {
 ContactSchedule ContactWorld::plan(const BodySet& bodies, const BoundarySegments& walls,
                                    double dt) {
   ContactSchedule schedule = planner_.plan(bodies, walls, dt, config_);
-  pose_after_.position = bodies.position;  // where every body's first interval starts
-  pose_after_.angle = bodies.angle;
+  start_pose_.position = bodies.position;  // where every body's first interval starts
+  start_pose_.angle = bodies.angle;
   pose_known_.assign(static_cast<std::size_t>(bodies.size()), 1);
   std::vector<char> free(static_cast<std::size_t>(bodies.size()), 0);
   for (const int i : schedule.free) free[i] = 1;
@@ -503,7 +500,7 @@ void ContactWorld::solve(BodySet& bodies) {
   profile_.sleeping_islands = sleep_.set_aside(contacts_, islands_, resting_, bodies);
   profile_.sleeping_contacts = static_cast<int>(resting_.size());
   if (profile_.sleeping_islands > 0) islands_.group(contacts_, bodies.size());
-  prepare_contacts(contacts_, bodies, masses_, config_, lengths_, interval_pose_);
+  prepare_contacts(contacts_, bodies, masses_, config_, lengths_, start_pose_);
   profile_.islands = islands_.count();
   profile_.largest_island = islands_.largest();
   velocity_before_.resize(bodies.velocity.size());
@@ -512,8 +509,8 @@ void ContactWorld::solve(BodySet& bodies) {
     velocity_before_[i] = bodies.velocity[i];
     angular_velocity_before_[i] = bodies.angular_velocity[i];
   }
-  profile_.velocity_sweeps = solver_->solve(contacts_, islands_, bodies, masses_, lengths_,
-                                            interval_start_, interval_pose_);
+  profile_.velocity_sweeps =
+      solver_->solve(contacts_, islands_, bodies, masses_, lengths_, interval_start_, start_pose_);
   profile_.solve = clock.lap();
 }
 

@@ -150,10 +150,9 @@ class ContactWorld {
   BodyVelocities after_;           // each body's velocities at the end of its last step here
   std::vector<char> after_known_;  // 1 while after_ holds the start of the body's next interval
   BodyVelocities interval_start_;  // this step's bodies at the start of their interval
-  BodyPoses pose_after_;           // each body's pose at the end of its last step here, or at
-                                   // the start of the flow step (plan())
-  std::vector<char> pose_known_;   // 1 while pose_after_ holds the start of its next interval
-  BodyPoses interval_pose_;        // this step's bodies' poses at the start of their interval
+  BodyPoses start_pose_;           // each body's pose where its interval starts: at the end of
+                                   // its last step here, or at the flow step's start (plan())
+  std::vector<char> pose_known_;   // 1 where start_pose_ holds it
   std::vector<double> reach_;      // [m] per body, added to its detection margin (see step())
   std::vector<int> grown_;         // the bodies whose reach_ the last step grew
   std::vector<double> lengths_;    // h per body [s]

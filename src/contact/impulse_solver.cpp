@@ -156,8 +156,9 @@ void prepare_contacts(std::span<ContactConstraint> contacts, const BodySet& bodi
       p.normal_mass = effective_mass(masses, c, p.r_a, p.r_b, c.normal);
       p.tangent_mass = effective_mass(masses, c, p.r_a, p.r_b, tangent);
       p.approach_velocity = normal_velocity(bodies, c, p);
-      // The separation where the interval started, s_0 = s - (what the free move closed): the
-      // poses are put at x_0 + h u after the solve (sequential_impulses.cpp), so s_0 + h v_n.
+      // The separation where the interval started, s_0 = s - (what the free move closed): a
+      // pushed body's pose is put at x_0 + h u after the solve (sequential_impulses.cpp), so
+      // s_0 + h v_n.
       // A gap still open after the free move may close by no more than it (nor than s_0): a
       // body approaching it ends the interval short of the face by what the free move closed,
       // and closes the rest in the next one (letting it close s_0 at once left fast-turning
