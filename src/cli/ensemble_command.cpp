@@ -36,6 +36,19 @@ void add_ensemble_command(CLI::App& app) {
                 "replace an earlier ensemble in the output folder instead of resuming it");
   cmd->add_flag("-q,--quiet", *quiet, "no progress line");
   cmd->add_flag("--no-pictures", *no_pictures, "no PNG pictures");
+  // Each member runs on one rank; one flood over several ranks is `mpirun -n N flotsam run`.
+  auto ranks_per_member = std::make_shared<int>(1);
+  cmd->add_option("--ranks-per-member", *ranks_per_member,
+                  "MPI ranks each member spans: 1 (members split over ranks are not supported)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return text == "1" ? std::string()
+                               : "each member runs on one rank (got " + text +
+                                     "): members split over ranks are not supported; an "
+                                     "ensemble deals its members to the ranks of mpirun -n K, "
+                                     "and one flood splits over ranks with mpirun -n N flotsam run";
+          },
+          "1"));
   auto no_shared_flow = std::make_shared<bool>(false);
   cmd->add_flag("--no-shared-flow", *no_shared_flow,
                 "each member computes its own flow even in one-way and frozen cases (the "

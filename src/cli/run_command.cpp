@@ -17,18 +17,20 @@
 namespace flotsam::cli {
 namespace {
 
-// One flood does not split over MPI ranks yet (issue 41): under `mpirun -n N` every rank would
-// run the whole case into the same folder. Refused on every rank, before anything is written.
-void refuse_ranks(const std::string& case_file) {
-  if (!RankWorld::launched_by_mpirun()) return;
-  const RankWorld world;
-  if (world.size() <= 1) return;
-  throw_input_error(
-      "flotsam run was started on {} MPI ranks: one run does not split over ranks (each rank "
-      "would run the whole case into the same folder). Run it without mpirun, on the machine's "
-      "threads (OMP_NUM_THREADS); an ensemble (a case with `ensemble:`) spreads its members over "
-      "the ranks: mpirun -n {} flotsam ensemble {}",
-      world.size(), world.size(), case_file);
+// Under `mpirun -n N` (N > 1) the flood is split over the ranks (finite volumes,
+// flow/fv/rank_split.hpp): each advances its part of the cells, rank 0 writes and reports. An
+// error on one rank stops them all (the others would wait for it).
+void run_case(const std::string& case_file, const RunOptions& base, double end) {
+  Case c = read_case(case_file);
+  if (end > 0) c.time.end = end;
+  const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
+  check_estimate(c, estimate);
+  if (is_large(estimate) && base.rank == 0)
+    print_error(fmt::format("flotsam: a large run: {}\n", describe_estimate(estimate)));
+  Mesh mesh = generate_mesh(c.mesh);
+  Simulation simulation(std::move(c), std::move(mesh), base);
+  simulation.run();
+  if (base.rank == 0) print_result(simulation.summary());
 }
 
 }  // namespace
@@ -75,24 +77,26 @@ void add_run_command(CLI::App& app) {
                 "fewer would be faster on a shared machine (by default each step takes the "
                 "count measured fastest)");
   cmd->callback([options] {
-    refuse_ranks(options->case_file);
-    Case c = read_case(options->case_file);
-    if (options->end > 0) c.time.end = options->end;
-    const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
-    check_estimate(c, estimate);
-    if (is_large(estimate))
-      print_error(fmt::format("flotsam: a large run: {}\n", describe_estimate(estimate)));
-    Mesh mesh = generate_mesh(c.mesh);
-    const RunOptions run{.output_directory = options->output,
-                         .overwrite = options->overwrite,
-                         .write_output = true,
-                         .progress = !options->quiet,
-                         .restart = options->restart,
-                         .accept_output_changes = options->accept_output_changes,
-                         .adapt_threads = !options->fixed_threads};
-    Simulation simulation(std::move(c), std::move(mesh), run);
-    simulation.run();
-    print_result(simulation.summary());
+    RunOptions run{.output_directory = options->output,
+                   .overwrite = options->overwrite,
+                   .write_output = true,
+                   .progress = !options->quiet,
+                   .restart = options->restart,
+                   .accept_output_changes = options->accept_output_changes,
+                   .adapt_threads = !options->fixed_threads};
+    if (!RankWorld::launched_by_mpirun()) return run_case(options->case_file, run, options->end);
+    const RankWorld world;
+    run.rank = world.rank(), run.ranks = world.size();
+    run.write_output = world.rank() == 0;
+    run.progress = run.progress && world.rank() == 0;
+    if (world.size() == 1) return run_case(options->case_file, run, options->end);
+    try {
+      run_case(options->case_file, run, options->end);
+    } catch (const std::exception& e) {
+      print_error(
+          fmt::format("flotsam: rank {} of {}: {}\n", world.rank(), world.size(), e.what()));
+      world.abort(1);
+    }
   });
 }
 

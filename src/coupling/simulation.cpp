@@ -33,7 +33,7 @@ void Simulation::initialize() {
   bool output_changed = false;
   const std::filesystem::path checkpoint =
       options_.restart ? restart_checkpoint(output_changed) : "";
-  flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
+  flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get(), options_.rank, options_.ranks);
   flow_->initialize();
   if (!options_.shared_flow.empty()) {
     if (options_.restart || !flow_can_be_shared(case_))
@@ -83,7 +83,8 @@ void Simulation::initialize() {
     has_decks_ = !walls_.band_lower.empty();
     if (case_.output.backwater && case_.time.mode == CouplingMode::two_way &&
         !jam_geometry_.bridges.empty()) {
-      reference_flow_ = make_flow_engine(mesh_, case_, options_.mesh_setup.get());
+      reference_flow_ =
+          make_flow_engine(mesh_, case_, options_.mesh_setup.get(), options_.rank, options_.ranks);
       reference_flow_->initialize();
       backwater_probe_ = std::make_unique<BackwaterProbe>(mesh_, jam_geometry_);
     }

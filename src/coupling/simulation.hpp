@@ -58,6 +58,10 @@ struct RunOptions {
   /// omp_get_max_threads() down (core/thread_governor.hpp): `flotsam run` and ensemble members;
   /// false: every step on all of them.
   bool adapt_threads = false;
+  /// One flood split over MPI ranks (finite volumes, flow/fv/rank_split.hpp): this process is
+  /// rank `rank` of `ranks`; each advances its part of the cells and holds the whole state after
+  /// each flow step. Only rank 0 should write (write_output, progress).
+  int rank = 0, ranks = 1;
 };
 
 class Simulation {

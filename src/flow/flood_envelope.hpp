@@ -36,6 +36,12 @@ struct FloodEnvelope {
 
   /// n cells, nothing seen yet.
   void reset(int n, double wet_depth_threshold);
+  /// Every per-cell array (a flood split over ranks gathers each cell's from its owner).
+  std::vector<std::vector<double>*> per_cell_arrays() {
+    return {&max_depth,        &max_speed,         &max_unit_discharge, &arrival,
+            &wet_duration,     &max_hazard_rating, &step_rating,        &step_rating_with_debris,
+            &australian_class, &vehicle_class};
+  }
   int size() const { return static_cast<int>(max_depth.size()); }
 
   /// Takes in the state at time t [s], the end of a sub-step of length dt [s]: depth h [m] and

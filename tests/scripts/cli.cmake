@@ -174,3 +174,7 @@ set_tests_properties(cli.long_inline_table_is_refused_before_reading
                      cli.long_table_from_a_file_runs PROPERTIES LABELS "cli" TIMEOUT 60
                      FIXTURES_REQUIRED cli_long_table
                      ENVIRONMENT "${test_environment};OMP_NUM_THREADS=1")
+# An ensemble's members run on one rank each; more is refused, naming what splits over ranks.
+flotsam_cli_test(ensemble_refuses_ranks_per_member nonzero
+                 "each member runs on one rank .got 2.*mpirun -n N flotsam run"
+                 ensemble ${examples}/bridge_blocking.yaml --ranks-per-member 2 -o no_members)

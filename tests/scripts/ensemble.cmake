@@ -40,15 +40,21 @@ add_test(NAME cli.ensemble_bridge_on_a_region_mesh
 set_tests_properties(cli.ensemble_bridge_on_a_region_mesh PROPERTIES LABELS "cli"
                      ENVIRONMENT "${test_environment}" FIXTURES_REQUIRED cli_ensemble_bridge)
 
-# `mpirun -n 2 flotsam run` is refused on every rank before anything is written (one flood does
-# not split over ranks yet: each rank would run the whole case into the same folder), with a
-# message naming the rank count and the ensemble command; on one rank the run goes on.
+# One flood over MPI ranks (finite volumes): the same files bit for bit on 1-4 ranks and after a
+# restart moved from 2 to 3 ranks (ranks_check.sh); the FEM is refused on every rank with a
+# message naming the engine, before anything is written.
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
-  add_test(NAME cli.run_on_two_ranks_is_refused
+  add_test(NAME cli.run_split_over_ranks_bit_for_bit
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/ranks_check.sh $<TARGET_FILE:flotsam>
+                   ${PROJECT_SOURCE_DIR}/examples/dam_break_valley.yaml
+                   ${CMAKE_CURRENT_BINARY_DIR}/ranks_work)
+  set_tests_properties(cli.run_split_over_ranks_bit_for_bit PROPERTIES LABELS "cli"
+                       ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
+  add_test(NAME cli.run_fem_on_two_ranks_is_refused
            COMMAND bash -c
-                   "rm -rf ranks2 && ! mpirun --oversubscribe -n 2 \"$0\" run \"$1\" -o ranks2 --end 2 -q >out.txt 2>&1 && grep -q 'started on 2 MPI ranks: one run does not split over ranks' out.txt && grep -q 'mpirun -n 2 flotsam ensemble' out.txt && test ! -e ranks2 && mpirun -n 1 \"$0\" run \"$1\" -o ranks1 --end 2 -q --overwrite >/dev/null 2>&1 && test -f ranks1/checkpoint.bin || { cat out.txt; exit 1; }"
+                   "rm -rf ranks2 && ! mpirun --oversubscribe -n 2 \"$0\" run \"$1\" -o ranks2 --end 2 -q >out.txt 2>&1 && grep -q 'flow.engine: fem does not split one flood over MPI ranks (2 were started)' out.txt && test ! -e ranks2 && mpirun -n 1 \"$0\" run \"$1\" -o ranks1 --end 2 -q --overwrite >/dev/null 2>&1 && test -f ranks1/checkpoint.bin || { cat out.txt; exit 1; }"
                    $<TARGET_FILE:flotsam> ${PROJECT_SOURCE_DIR}/examples/bridge_piers.yaml
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/cli_work)
-  set_tests_properties(cli.run_on_two_ranks_is_refused PROPERTIES LABELS "cli"
+  set_tests_properties(cli.run_fem_on_two_ranks_is_refused PROPERTIES LABELS "cli"
                        ENVIRONMENT "${test_environment};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
 endif()

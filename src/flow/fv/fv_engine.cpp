@@ -35,9 +35,16 @@ void FvEngine::initialize() {
   nodal_valid_ = false;
 }
 
+void FvEngine::split_over_ranks(int rank, int ranks) {
+  solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks));
+}
+
 void FvEngine::step(double dt) {
   envelope_.start_step();
   solver_.advance(dt);
+  if (const RankSplit* split = solver_.rank_split()) {  // each cell's envelope from its owner
+    for (std::vector<double>* a : envelope_.per_cell_arrays()) split->gather(a->data(), 1);
+  }
   envelope_.end_step(debris_);
   field_->advance_to_state();
   nodal_valid_ = false;
@@ -239,7 +246,19 @@ std::string FvEngine::summary() const {
              "updates, {}; wet (deeper than {:g} m) {:.1f} % of the area\n",
              solver_.cells().cell_count, s.count, finest, s.rejected, updates, courant,
              case_.output.wet_depth, 100.0 * solver_.wet_fraction()) +
-         hazard_summary();
+         ranks_summary() + hazard_summary();
+}
+
+// One flood over ranks: this rank's part and what it spent and sent in communication.
+std::string FvEngine::ranks_summary() const {
+  const RankSplit* split = solver_.rank_split();
+  if (!split) return "";
+  return fmt::format(
+      "MPI ranks        {}: rank {} advanced {} cells and read {} around them; {:.3g} s in "
+      "communication, {:.3g} MB sent\n",
+      split->size(), split->rank(), split->own().size(),
+      split->loaded().size() - split->own().size(), split->communication_seconds(),
+      split->bytes_sent() / 1e6);
 }
 
 // The areas where the hazard reached the classes people act on (docs/model.md "Flood hazard").

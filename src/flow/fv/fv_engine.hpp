@@ -45,9 +45,13 @@ class FvEngine final : public FlowEngine {
   int field_cell_of(const Vec2& p, int& hint) const { return field_->cell_of(p, hint); }
 
   const FiniteVolumeSolver& solver() const { return solver_; }
+  /// Advance rank `rank` of `ranks`' part of the cells (rank_split.hpp); every rank holds the
+  /// whole state after each step. InputError for what does not split yet (naming the key).
+  void split_over_ranks(int rank, int ranks);
 
  private:
   std::string hazard_summary() const;
+  std::string ranks_summary() const;
   /// The solver's state, balance, sub-step counts and envelopes as save() wrote them; the
   /// envelopes' running hazard rating too when `own_rating` (not a shared flow's step).
   void restore_state(ArchiveReader& r, const std::string& prefix, bool own_rating);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
+#include <string>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -144,6 +146,16 @@ double FiniteVolumeSolver::wet_fraction() const {
 // ---- the finite-volume operator L -------------------------------------------------------
 
 void FiniteVolumeSolver::load_cells(const ConservedState& U) const {
+  if (const RankSplit* split = part()) {  // this rank's cells and the two rings around them
+    const std::span<const int> cells = split->loaded();
+    const auto n = static_cast<std::ptrdiff_t>(cells.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < n; ++k) {
+      const int i = cells[k];
+      load_cell(i, U.h[i], U.hu[i], U.hv[i]);
+    }
+    return;
+  }
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < cells_.cell_count; ++i) load_cell(i, U.h[i], U.hu[i], U.hv[i]);
 }
@@ -172,19 +184,34 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
                                              LevelRange levels) const {
   const CellMesh& c = cells_;
   const auto& conditions = case_.flow.boundaries;
-  // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry).
-  std::vector<double> weight_sum(conditions.size(), 0.0), length_sum(conditions.size(), 0.0);
-  for (int edge : boundary_edges) {
+  const auto discharge = [&](int edge) {  // the edge's discharge condition, or -1
     const int k = boundaries_.group_condition[c.group[edge]];
-    if (k < 0 || conditions[k].kind != BoundaryCondition::Kind::discharge) continue;
-    const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
-    edge_discharge_[edge] = h * std::sqrt(h);
+    return k >= 0 && conditions[k].kind == BoundaryCondition::Kind::discharge ? k : -1;
+  };
+  // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry). Over
+  // ranks, each rank's edges' h^{3/2} go to every rank and the sums run over all of the mesh's
+  // boundary edges in their order, as on one rank.
+  const RankSplit* split = part();
+  if (split) {
+    gather_discharge_weights();
+    boundary_edges = c.boundary_edges;
+  } else {
+    for (const int edge : boundary_edges) {
+      if (discharge(edge) < 0) continue;
+      const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
+      edge_discharge_[edge] = h * std::sqrt(h);
+    }
+  }
+  std::vector<double> weight_sum(conditions.size(), 0.0), length_sum(conditions.size(), 0.0);
+  for (const int edge : boundary_edges) {
+    const int k = discharge(edge);
+    if (k < 0) continue;
     weight_sum[k] += c.length[edge] * edge_discharge_[edge];
     length_sum[k] += c.length[edge];
   }
-  for (int edge : boundary_edges) {
-    const int k = boundaries_.group_condition[c.group[edge]];
-    if (k < 0 || conditions[k].kind != BoundaryCondition::Kind::discharge) continue;
+  for (const int edge : boundary_edges) {
+    const int k = discharge(edge);
+    if (k < 0) continue;
     const double Q = conditions[k].value(t);
     edge_discharge_[edge] =
         weight_sum[k] > 0.0 ? Q * edge_discharge_[edge] / weight_sum[k] : Q / length_sum[k];
@@ -227,7 +254,36 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
   deck_fluxes(levels);
 
   std::fill(outflow_rate_.begin(), outflow_rate_.end(), 0.0);
+  if (split) {  // every rank's boundary edges' outflow, summed in the mesh's order
+    const std::vector<int>& B = c.boundary_edges;
+    boundary_value_.assign(B.size(), 0.0);
+    for (const int k : split->boundary_positions())
+      boundary_value_[k] = c.length[B[k]] * flux_mass_[B[k]];
+    split->gather_boundary(boundary_value_);
+    for (std::size_t k = 0; k < B.size(); ++k) outflow_rate_[c.group[B[k]]] += boundary_value_[k];
+    return;
+  }
   for (int edge : boundary_edges) outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
+}
+
+// h^{3/2} at every edge of a discharge condition, each formed by the rank that owns its cell.
+void FiniteVolumeSolver::gather_discharge_weights() const {
+  const CellMesh& c = cells_;
+  const auto& conditions = case_.flow.boundaries;
+  if (std::none_of(conditions.begin(), conditions.end(), [](const BoundaryCondition& b) {
+        return b.kind == BoundaryCondition::Kind::discharge;
+      }))
+    return;
+  const std::vector<int>& B = c.boundary_edges;
+  boundary_value_.assign(B.size(), 0.0);
+  for (const int k : split_->boundary_positions()) {
+    const int edge = B[k], j = boundaries_.group_condition[c.group[edge]];
+    if (j < 0 || conditions[j].kind != BoundaryCondition::Kind::discharge) continue;
+    const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
+    boundary_value_[k] = h * std::sqrt(h);
+  }
+  split_->gather_boundary(boundary_value_);
+  for (std::size_t k = 0; k < B.size(); ++k) edge_discharge_[B[k]] = boundary_value_[k];
 }
 
 // The edges a deck stands on (deck_flux.hpp), once the water reaches its soffit on either side:
@@ -297,9 +353,13 @@ void FiniteVolumeSolver::add_local_rate(int i, double h, double hu, double hv, d
 // reactions. The largest wave speed at its edges gives its Courant step (model.md (M-16)).
 void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
   const CellMesh& c = cells_;
+  const RankSplit* split = part();
+  const std::span<const int> own = split ? split->own() : std::span<const int>(all_cells_);
+  const auto count = static_cast<std::ptrdiff_t>(own.size());
   double dt_min = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt_min)
-  for (int i = 0; i < c.cell_count; ++i) {
+  for (std::ptrdiff_t index = 0; index < count; ++index) {
+    const int i = own[index];
     double dh = 0.0, dx = 0.0, dy = 0.0, speed = 0.0;
     for (int k = 0; k < 3; ++k) {
       const EdgeRate r = edge_rate(i, k);
@@ -313,7 +373,7 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
     add_local_rate(i, field_.h[i], U.hu[i], U.hv[i], rate_hu_[i], rate_hv_[i]);
     if (speed > 0.0) dt_min = std::min(dt_min, c.length_scale[i] / speed);
   }
-  stage_courant_step_ = case_.flow.fv.courant * dt_min;
+  stage_courant_step_ = case_.flow.fv.courant * (split ? split->min(dt_min) : dt_min);
 }
 
 SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 direction) const {
@@ -336,6 +396,11 @@ void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
 
 void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) const {
   load_cells(U);
+  if (const RankSplit* split = part()) {
+    reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_, split->reconstructed());
+    compute_edge_fluxes(split->edges(), {}, t, {});
+    return;
+  }
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
   compute_edge_fluxes(all_edges_, cells_.boundary_edges, t, {});
 }
@@ -350,6 +415,13 @@ void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) cons
 // whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
 void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   if (friction_.law == FrictionLaw::none) return;
+  if (const RankSplit* split = part()) {
+    const std::span<const int> own = split->own();
+    const auto n = static_cast<std::ptrdiff_t>(own.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < n; ++k) apply_friction(U, own[k], dt);
+    return;
+  }
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < cells_.cell_count; ++i) apply_friction(U, i, dt);
 }
@@ -369,7 +441,9 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) con
 // The bodies' drag after friction (body_drag.hpp), in the cells under them only: a few among
 // many, each on its own (the order does not change a bit).
 void FiniteVolumeSolver::apply_body_drag(ConservedState& U, double dt) {
-  for (const int i : body_drag_.cells) body_drag_.apply(U, i, dt, dry_depth_);
+  const RankSplit* split = part();
+  for (const int i : body_drag_.cells)
+    if (!split || split->owns(i)) body_drag_.apply(U, i, dt, dry_depth_);
 }
 
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
@@ -392,13 +466,16 @@ double FiniteVolumeSolver::courant_step() const {
 // L(U1)) + R, so each stage's boundary outflow counts half (the rain is counted whole by advance).
 bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState& y,
                                    ConservedState& out, double a, double b, double dt) {
-  const int n = cells_.cell_count;
+  const RankSplit* split = part();
+  const std::span<const int> own = split ? split->own() : std::span<const int>(all_cells_);
+  const auto n = static_cast<std::ptrdiff_t>(own.size());
   const double rain = rain_depth_;  // [m] times w_i
   const std::vector<double>& w = rain_.weights();
   const double* source = sources_.any() ? source_depth_.data() : nullptr;  // [m]
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
-  for (int i = 0; i < n; ++i) {
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const int i = own[k];
     const double R = rain * w[i] + (source ? source[i] : 0.0);
     out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i] + R);
     out.hu[i] = a * U.hu[i] + b * (y.hu[i] + dt * rate_hu_[i]);
@@ -409,6 +486,10 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
     balance_.group_outflow[g] += 0.5 * dt * outflow_rate_[g];
     balance_.outflow += 0.5 * dt * outflow_rate_[g];
     balance_.group_rate[g] = outflow_rate_[g];
+  }
+  if (split) {
+    suspect = split->any(suspect);
+    if (suspect) gather(out);  // every rank looks at every cell (clamp_round_off)
   }
   return suspect;
 }
@@ -426,6 +507,10 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
   if (case_.flow.fv.time_levels > 1) return advance_local(dt);
+  struct Advancing {  // over ranks, each advances its own part while this lasts (part())
+    bool& flag;
+    ~Advancing() { flag = false; }
+  } advancing{advancing_ = true};
   const double t_end = U_.time + dt;
   U1_.h.resize(U_.h.size());
   U1_.hu.resize(U_.h.size());
@@ -443,6 +528,7 @@ void FiniteVolumeSolver::advance(double dt) {
     int bad = add_stage(U_, U_, U1_, 0.0, 1.0, h) ? clamp_round_off(U1_, 0.5, all_cells_) : -1;
     // Stage 2: U^{n+1} = (U + U1 + dt L(U1) + R) / 2, then infiltration and friction.
     if (bad < 0) {
+      exchange(U1_);
       evaluate(U1_, t + h);
       if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0, all_cells_);
     }
@@ -459,6 +545,7 @@ void FiniteVolumeSolver::advance(double dt) {
     apply_infiltration(U1_, h);
     apply_friction(U1_, h);
     apply_body_drag(U1_, h);
+    exchange(U1_);
     std::swap(U_, U1_);
     U_.time = h == t_end - t ? t_end : t + h;
     shrink = 1.0;
@@ -470,7 +557,41 @@ void FiniteVolumeSolver::advance(double dt) {
     if (sub_step_observer_) sub_step_observer_(U_.time, h);
   }
   U_.time = t_end;
+  if (split_) {  // the whole state on every rank, and what the bodies' cells gave up
+    gather(U_);
+    if (!body_drag_.empty()) {
+      split_->gather(body_drag_.velocity_time.data()->data(), 2);
+      split_->gather(body_drag_.time.data(), 1);
+    }
+  }
   balance_.volume = volume();
+}
+
+void FiniteVolumeSolver::set_rank_split(std::shared_ptr<const RankSplit> split) {
+  const FlowConfig& flow = case_.flow;
+  const std::string file = case_.file.empty() ? "case" : case_.file;
+  if (split && split->size() > 1 && flow.fv.time_levels > 1)
+    throw_input_error(
+        "{}: flow.fv.time_levels: {} is not supported on several MPI ranks yet (issue 41); run "
+        "one flood over ranks with time_levels: 1, or on one rank",
+        file, flow.fv.time_levels);
+  if (split && split->size() > 1 && rain_.infiltrating())
+    throw_input_error(
+        "{}: flow.rain infiltration is not supported on several MPI ranks yet (issue 41); run it "
+        "on one rank",
+        file);
+  split_ = split && split->size() > 1 ? std::move(split) : nullptr;
+}
+
+void FiniteVolumeSolver::exchange(ConservedState& U) const {
+  if (!split_) return;
+  double* arrays[] = {U.h.data(), U.hu.data(), U.hv.data()};
+  split_->exchange(arrays);
+}
+
+void FiniteVolumeSolver::gather(ConservedState& U) const {
+  if (!split_) return;
+  for (auto* a : {&U.h, &U.hu, &U.hv}) split_->gather(a->data(), 1);
 }
 
 // Round-off can leave a depth of -1e-17 m where a cell drained; such depths become 0 and the

@@ -26,6 +26,7 @@
 #include "flow/fv/flow_sources.hpp"
 #include "flow/fv/fv_boundary.hpp"
 #include "flow/fv/rain_source.hpp"
+#include "flow/fv/rank_split.hpp"
 #include "flow/fv/reconstruction.hpp"
 #include "flow/fv/time_levels.hpp"
 #include "flow/water_balance.hpp"
@@ -81,6 +82,10 @@ class FiniteVolumeSolver {
   /// The bodies' drag per cell, point-implicit after friction (body_drag.hpp); empty: none.
   void set_body_drag(BodyDrag drag) { body_drag_ = std::move(drag); }
   const BodyDrag& body_drag() const { return body_drag_; }
+  /// Advance only this rank's cells (rank_split.hpp); the state is whole again after advance().
+  /// nullptr: every cell (one rank).
+  void set_rank_split(std::shared_ptr<const RankSplit> split);
+  const RankSplit* rank_split() const { return split_.get(); }
   /// Called after every sub-step with the state's new time and the sub-step's length [s].
   void set_sub_step_observer(std::function<void(double t, double dt)> f) {
     sub_step_observer_ = std::move(f);
@@ -148,6 +153,12 @@ class FiniteVolumeSolver {
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
   void apply_body_drag(ConservedState& U, double dt);
+  // One flood over ranks (rank_split.hpp): this rank's part of L and of the stages.
+  void gather_discharge_weights() const;
+  /// This rank's split while advance() runs (each rank its own cells), else nullptr (all cells).
+  const RankSplit* part() const { return advancing_ ? split_.get() : nullptr; }
+  void exchange(ConservedState& U) const;
+  void gather(ConservedState& U) const;
   // Local time stepping (local_time_steps.cpp).
   void advance_local(double dt);
   std::vector<std::vector<int>> tied_cells() const;
@@ -166,6 +177,9 @@ class FiniteVolumeSolver {
 
   const Mesh& mesh_;
   const Case& case_;
+  std::shared_ptr<const RankSplit> split_;  // nullptr: one rank
+  bool advancing_ = false;
+  mutable std::vector<double> boundary_value_;    // per boundary edge (split_boundary_sums)
   std::shared_ptr<const CellMesh> shared_cells_;  // owns cells_
   const CellMesh& cells_;
   FvBoundaries boundaries_;
