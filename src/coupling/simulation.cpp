@@ -304,8 +304,12 @@ void Simulation::check_diagnostics() {
 }
 
 void Simulation::write_output_if_due(bool force) {
-  if (!output_) return;
   if (!force && time_ < next_output_ - 1e-9 * case_.time.step) return;
+  if (!force) synchronize_flows();  // every rank of a flood split over ranks, at the same times
+  if (!output_) {
+    while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
+    return;
+  }
   auto timed = timer_.time(Stage::output);
   std::vector<std::uint8_t> jammed;
   if (has_bodies_) {
@@ -382,10 +386,16 @@ void Simulation::run() {
 }
 
 void Simulation::write_final_output() {
+  synchronize_flows();  // what the last output, the rasters and the summary read
   if (!output_) return;
   if (output_->times().back() < time_)
     write_output_if_due(true);  // the final state, when the last interval was not complete
   output_->close();
+}
+
+void Simulation::synchronize_flows() {
+  flow_->synchronize();
+  if (reference_flow_) reference_flow_->synchronize();
 }
 
 JamStatistics Simulation::jam_statistics() const {

@@ -111,6 +111,9 @@ class Simulation {
   // pixels would not fit in memory.
   RasterGrid envelope_grid() const;
   void check_diagnostics();
+  /// A flood split over ranks: what only the output reads, gathered on every rank (each rank
+  /// calls it at the same points of the run).
+  void synchronize_flows();
   void write_output_if_due(bool force);
   void open_probes(std::optional<CsvResume> resume);
   RunLayout run_layout() const;  // the open groups (1 inflow/outflow, 0 wall), rain or not

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <span>
 
 #include "core/error.hpp"
 #include "flow/hazard.hpp"
@@ -26,10 +28,9 @@ void FloodEnvelope::reset(int n, double wet_depth_threshold) {
 }
 
 void FloodEnvelope::update(const std::vector<double>& h, const std::vector<double>& hu,
-                           const std::vector<double>& hv, double t, double dt) {
-  const int n = size();
-#pragma omp parallel for schedule(static) if (n >= 20000)
-  for (int i = 0; i < n; ++i) {
+                           const std::vector<double>& hv, double t, double dt,
+                           std::span<const int> cells) {
+  const auto cell = [&](int i) {
     const double q = std::sqrt(hu[i] * hu[i] + hv[i] * hv[i]);  // H |u| [m^2/s]
     max_depth[i] = std::max(max_depth[i], h[i]);
     max_unit_discharge[i] = std::max(max_unit_discharge[i], q);
@@ -48,7 +49,16 @@ void FloodEnvelope::update(const std::vector<double>& h, const std::vector<doubl
       else
         wet_duration[i] += dt;
     }
+  };
+  if (!cells.empty()) {
+    const auto n = static_cast<std::ptrdiff_t>(cells.size());
+#pragma omp parallel for schedule(static) if (n >= 20000)
+    for (std::ptrdiff_t k = 0; k < n; ++k) cell(cells[k]);
+    return;
   }
+  const int n = size();
+#pragma omp parallel for schedule(static) if (n >= 20000)
+  for (int i = 0; i < n; ++i) cell(i);
 }
 
 void FloodEnvelope::start_step() {

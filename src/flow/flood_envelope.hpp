@@ -8,6 +8,7 @@
 // checkpoints, so a restart continues the running maxima.
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,9 @@ struct FloodEnvelope {
   /// Takes in the state at time t [s], the end of a sub-step of length dt [s]: depth h [m] and
   /// discharge (hu, hv) [m^2/s] per cell; speeds only where wet (h > wet_depth): a film's
   /// velocity is the numerics' (docs/model.md (M-15)), not a hazard.
+  /// `cells`: only these (a flood split over ranks: a rank's own); empty: every cell.
   void update(const std::vector<double>& h, const std::vector<double>& hu,
-              const std::vector<double>& hv, double t, double dt);
+              const std::vector<double>& hv, double t, double dt, std::span<const int> cells = {});
 
   /// A coupling step begins: its sub-steps' largest ratings start afresh.
   void start_step();

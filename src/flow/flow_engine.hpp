@@ -74,6 +74,9 @@ class FlowEngine {
   /// Called after each checkpoint: the engine drops what a restarted run would not have (so
   /// that the run that goes on and a restarted one stay the same bit for bit).
   virtual void after_checkpoint() {}
+  /// A flood split over MPI ranks: gathers on every rank what only the output reads (the flood
+  /// envelopes); every rank calls it at the same points, before rank 0 writes.
+  virtual void synchronize() {}
   /// Where the bodies lie during the next step: the cells under them carry debris for the
   /// hazard rating of the flood envelopes (hazard.hpp (M-H2)). Engines without envelopes
   /// ignore them.

@@ -28,7 +28,8 @@ void FvEngine::initialize() {
   envelope_.end_step({});
   solver_.set_sub_step_observer([this](double t, double dt) {
     const ConservedState& U = solver_.state();
-    envelope_.update(U.h, U.hu, U.hv, t, dt);
+    const RankSplit* split = solver_.rank_split();  // over ranks: its own cells, gathered later
+    envelope_.update(U.h, U.hu, U.hv, t, dt, split ? split->own() : std::span<const int>());
   });
   field_ = std::make_unique<FvFlowField>(solver_, mesh_, solver_.node_bed(), locator_);
   field_->reset_to_state();
@@ -39,13 +40,16 @@ void FvEngine::split_over_ranks(int rank, int ranks) {
   solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks));
 }
 
-void FvEngine::step(double dt) {
-  envelope_.start_step();
-  solver_.advance(dt);
+void FvEngine::synchronize() {
   if (const RankSplit* split = solver_.rank_split()) {  // each cell's envelope from its owner
     for (std::vector<double>* a : envelope_.per_cell_arrays()) split->gather(a->data(), 1);
   }
-  envelope_.end_step(debris_);
+}
+
+void FvEngine::step(double dt) {
+  envelope_.start_step();
+  solver_.advance(dt);
+  envelope_.end_step(debris_);  // over ranks, right in the own cells until synchronize()
   field_->advance_to_state();
   nodal_valid_ = false;
 }

@@ -48,6 +48,7 @@ class FvEngine final : public FlowEngine {
   /// Advance rank `rank` of `ranks`' part of the cells (rank_split.hpp); every rank holds the
   /// whole state after each step. InputError for what does not split yet (naming the key).
   void split_over_ranks(int rank, int ranks);
+  void synchronize() override;
 
  private:
   std::string hazard_summary() const;

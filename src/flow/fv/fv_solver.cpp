@@ -351,7 +351,7 @@ void FiniteVolumeSolver::add_local_rate(int i, double h, double hu, double hv, d
 
 // Per cell: the sum of its edges' rates, divided by the area, and Coriolis, wind, body
 // reactions. The largest wave speed at its edges gives its Courant step (model.md (M-16)).
-void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
+void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U, bool courant) const {
   const CellMesh& c = cells_;
   const RankSplit* split = part();
   const std::span<const int> own = split ? split->own() : std::span<const int>(all_cells_);
@@ -373,6 +373,7 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U) const {
     add_local_rate(i, field_.h[i], U.hu[i], U.hv[i], rate_hu_[i], rate_hv_[i]);
     if (speed > 0.0) dt_min = std::min(dt_min, c.length_scale[i] / speed);
   }
+  if (!courant) return;  // the second stage's: not needed (over ranks, a reduction saved)
   stage_courant_step_ = case_.flow.fv.courant * (split ? split->min(dt_min) : dt_min);
 }
 
@@ -389,9 +390,9 @@ SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 di
   return sum;
 }
 
-void FiniteVolumeSolver::evaluate(const ConservedState& U, double t) const {
+void FiniteVolumeSolver::evaluate(const ConservedState& U, double t, bool courant) const {
   evaluate_fluxes(U, t);
-  sum_cell_rates(U);
+  sum_cell_rates(U, courant);
 }
 
 void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) const {
@@ -529,7 +530,7 @@ void FiniteVolumeSolver::advance(double dt) {
     // Stage 2: U^{n+1} = (U + U1 + dt L(U1) + R) / 2, then infiltration and friction.
     if (bad < 0) {
       exchange(U1_);
-      evaluate(U1_, t + h);
+      evaluate(U1_, t + h, false);
       if (add_stage(U_, U1_, U1_, 0.5, 0.5, h)) bad = clamp_round_off(U1_, 1.0, all_cells_);
     }
     if (bad >= 0) {

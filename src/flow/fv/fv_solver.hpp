@@ -138,7 +138,8 @@ class FiniteVolumeSolver {
   };
 
   /// dU/dt = L(U) at time t into rate_; boundary outflow [m^3/s] per group into outflow_rate_.
-  void evaluate(const ConservedState& U, double t) const;
+  /// `courant`: also the Courant step of U's wave speeds into stage_courant_step_.
+  void evaluate(const ConservedState& U, double t, bool courant = true) const;
   /// Its edge fluxes only (every edge, at U): what local time stepping starts a cycle with.
   void evaluate_fluxes(const ConservedState& U, double t) const;
   void compute_edge_fluxes(std::span<const int> edges, std::span<const int> boundary_edges,
@@ -148,7 +149,7 @@ class FiniteVolumeSolver {
   void add_local_rate(int i, double h, double hu, double hv, double& ru, double& rv) const;
   void load_cell(int i, double h, double hu, double hv) const;
   void apply_friction(ConservedState& U, int i, double dt) const;
-  void sum_cell_rates(const ConservedState& U) const;
+  void sum_cell_rates(const ConservedState& U, bool courant = true) const;
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
