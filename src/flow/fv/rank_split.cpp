@@ -40,8 +40,7 @@ std::vector<int> grow(const CellMesh& c, std::vector<int> cells, int rings) {
 
 }  // namespace
 
-RankSplit::RankSplit(const CellMesh& cells, int rank, int size)
-    : cells_(cells), rank_(rank), size_(size) {
+RankSplit::RankSplit(const CellMesh& cells, int rank, int size) : rank_(rank), size_(size) {
   if (size < 1 || rank < 0 || rank >= size)
     throw std::invalid_argument("RankSplit: rank outside 0 .. size - 1");
 #if !FLOTSAM_MPI
@@ -90,6 +89,10 @@ RankSplit::RankSplit(const CellMesh& cells, int rank, int size)
 
 #if FLOTSAM_MPI
 
+namespace {
+constexpr int halo_tag = 41;  // the halo's messages
+}  // namespace
+
 void RankSplit::exchange(std::span<double* const> arrays) const {
   if (size_ == 1) return;
   const double start = omp_get_wtime();
@@ -101,7 +104,7 @@ void RankSplit::exchange(std::span<double* const> arrays) const {
     const auto q = static_cast<std::size_t>(peers_[p]);
     in[p].resize(A * recv_[q].size());
     requests.emplace_back();
-    MPI_Irecv(in[p].data(), static_cast<int>(in[p].size()), MPI_DOUBLE, peers_[p], 41,
+    MPI_Irecv(in[p].data(), static_cast<int>(in[p].size()), MPI_DOUBLE, peers_[p], halo_tag,
               MPI_COMM_WORLD, &requests.back());
   }
   for (std::size_t p = 0; p < peers_.size(); ++p) {
@@ -110,7 +113,7 @@ void RankSplit::exchange(std::span<double* const> arrays) const {
     for (double* a : arrays)
       for (const int i : send_[q]) out[p].push_back(a[i]);
     requests.emplace_back();
-    MPI_Isend(out[p].data(), static_cast<int>(out[p].size()), MPI_DOUBLE, peers_[p], 41,
+    MPI_Isend(out[p].data(), static_cast<int>(out[p].size()), MPI_DOUBLE, peers_[p], halo_tag,
               MPI_COMM_WORLD, &requests.back());
     bytes_ += 8.0 * static_cast<double>(out[p].size());
   }
@@ -124,51 +127,50 @@ void RankSplit::exchange(std::span<double* const> arrays) const {
   seconds_ += omp_get_wtime() - start;
 }
 
-void RankSplit::gather(double* data, int per_cell) const {
-  if (size_ == 1) return;
-  const double start = omp_get_wtime();
-  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size(), 0);
+// Every rank's `mine` (rank q sends counts[q] values) on every rank, in rank order.
+std::vector<double> RankSplit::all_of(const std::vector<double>& mine,
+                                      const std::vector<int>& counts) const {
+  std::vector<int> offsets(counts.size(), 0);
   int total = 0;
   for (std::size_t q = 0; q < counts.size(); ++q) {
-    counts[q] = per_cell * static_cast<int>(own_of_[q].size());
     offsets[q] = total;
     total += counts[q];
   }
-  std::vector<double> mine, all(static_cast<std::size_t>(total));
-  mine.reserve(static_cast<std::size_t>(counts[static_cast<std::size_t>(rank_)]));
-  for (const int i : own_)
-    for (int k = 0; k < per_cell; ++k) mine.push_back(data[per_cell * i + k]);
+  std::vector<double> all(static_cast<std::size_t>(total));
   MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
                  offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   bytes_ += 8.0 * static_cast<double>(mine.size()) * (size_ - 1);
-  for (std::size_t q = 0; q < counts.size(); ++q) {
-    std::size_t k = static_cast<std::size_t>(offsets[q]);
-    for (const int i : own_of_[q])
-      for (int j = 0; j < per_cell; ++j) data[per_cell * i + j] = all[k++];
-  }
+  return all;
+}
+
+void RankSplit::gather(double* data, int per_cell) const {
+  if (size_ == 1) return;
+  const double start = omp_get_wtime();
+  std::vector<int> counts;
+  for (const auto& own : own_of_) counts.push_back(per_cell * static_cast<int>(own.size()));
+  std::vector<double> mine;
+  mine.reserve(static_cast<std::size_t>(per_cell) * own_.size());
+  for (const int i : own_)
+    for (int k = 0; k < per_cell; ++k) mine.push_back(data[per_cell * i + k]);
+  const std::vector<double> all = all_of(mine, counts);
+  std::size_t j = 0;
+  for (const auto& own : own_of_)
+    for (const int i : own)
+      for (int k = 0; k < per_cell; ++k) data[per_cell * i + k] = all[j++];
   seconds_ += omp_get_wtime() - start;
 }
 
 void RankSplit::gather_boundary(std::vector<double>& values) const {
   if (size_ == 1) return;
   const double start = omp_get_wtime();
-  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size(), 0);
-  int total = 0;
-  for (std::size_t q = 0; q < counts.size(); ++q) {
-    counts[q] = static_cast<int>(bedges_of_[q].size());
-    offsets[q] = total;
-    total += counts[q];
-  }
-  std::vector<double> mine, all(static_cast<std::size_t>(total));
-  for (const int k : bedges_of_[static_cast<std::size_t>(rank_)])
-    mine.push_back(values[static_cast<std::size_t>(k)]);
-  MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(),
-                 offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
-  bytes_ += 8.0 * static_cast<double>(mine.size()) * (size_ - 1);
-  for (std::size_t q = 0; q < counts.size(); ++q) {
-    std::size_t j = static_cast<std::size_t>(offsets[q]);
-    for (const int k : bedges_of_[q]) values[static_cast<std::size_t>(k)] = all[j++];
-  }
+  std::vector<int> counts;
+  for (const auto& positions : bedges_of_) counts.push_back(static_cast<int>(positions.size()));
+  std::vector<double> mine;
+  for (const int k : bedges_) mine.push_back(values[static_cast<std::size_t>(k)]);
+  const std::vector<double> all = all_of(mine, counts);
+  std::size_t j = 0;
+  for (const auto& positions : bedges_of_)
+    for (const int k : positions) values[static_cast<std::size_t>(k)] = all[j++];
   seconds_ += omp_get_wtime() - start;
 }
 
@@ -195,6 +197,10 @@ bool RankSplit::any(bool x) const {
 void RankSplit::exchange(std::span<double* const>) const {}
 void RankSplit::gather(double*, int) const {}
 void RankSplit::gather_boundary(std::vector<double>&) const {}
+std::vector<double> RankSplit::all_of(const std::vector<double>& mine,
+                                      const std::vector<int>&) const {
+  return mine;
+}
 double RankSplit::min(double x) const {
   return x;
 }

@@ -18,7 +18,7 @@ namespace flotsam {
 
 class RankSplit {
  public:
-  /// Rank `rank` of `size` (>= 1) over `cells` (which outlive it). MPI must be initialised when
+  /// Rank `rank` of `size` (>= 1) over `cells`. MPI must be initialised when
   /// size > 1 (std::invalid_argument when this build has no MPI).
   RankSplit(const CellMesh& cells, int rank, int size);
 
@@ -47,7 +47,8 @@ class RankSplit {
   double bytes_sent() const { return bytes_; }
 
  private:
-  const CellMesh& cells_;
+  std::vector<double> all_of(const std::vector<double>& mine, const std::vector<int>& counts) const;
+
   int rank_, size_;
   std::vector<int> own_, ring1_, ring2_, edges_, bedges_;
   std::vector<char> owned_;                    // per cell
