@@ -1,13 +1,16 @@
 // flotsam run CASE.yaml: mesh the case, run it, write results for ParaView and CSV tables, and
 // print the end-of-run summary.
 #include <fmt/core.h>
+#include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "cli/commands.hpp"
 #include "cli/logging.hpp"
 #include "core/error.hpp"
+#include "coupling/mesh_setup.hpp"
 #include "coupling/simulation.hpp"
 #include "ensemble/rank_world.hpp"
 #include "io/case_estimate.hpp"
@@ -20,7 +23,9 @@ namespace {
 // Under `mpirun -n N` (N > 1) the flood is split over the ranks (finite volumes,
 // flow/fv/rank_split.hpp): each advances its part of the cells, rank 0 writes and reports. An
 // error on one rank stops them all (the others would wait for it).
-void run_case(const std::string& case_file, const RunOptions& base, double end) {
+// Each rank meshes the case itself; the parts assume the same mesh on every rank, checked.
+void run_case(const std::string& case_file, const RunOptions& base, double end,
+              const RankWorld* world = nullptr) {
   Case c = read_case(case_file);
   if (end > 0) c.time.end = end;
   const RunEstimate estimate = estimate_run(c);  // before meshing, which can take long
@@ -28,6 +33,17 @@ void run_case(const std::string& case_file, const RunOptions& base, double end) 
   if (is_large(estimate) && base.rank == 0)
     print_error(fmt::format("flotsam: a large run: {}\n", describe_estimate(estimate)));
   Mesh mesh = generate_mesh(c.mesh);
+  if (world && world->size() > 1) {
+    const std::vector<std::string> sums = world->gather(mesh_checksum(mesh));
+    const bool same = std::all_of(sums.begin(), sums.end(),
+                                  [&](const std::string& x) { return x == sums.front(); });
+    if (world->broadcast(same ? "same" : "differ") != "same")
+      throw_run_error(
+          "{}: the ranks meshed the case differently (mesh checksums differ), so its cells "
+          "cannot be split over them; write the mesh once (flotsam mesh {} -o case.msh) and "
+          "give the file as mesh.file",
+          case_file, case_file);
+  }
   Simulation simulation(std::move(c), std::move(mesh), base);
   simulation.run();
   if (base.rank == 0) print_result(simulation.summary());
@@ -90,8 +106,10 @@ void add_run_command(CLI::App& app) {
     run.write_output = world.rank() == 0;
     run.progress = run.progress && world.rank() == 0;
     if (world.size() == 1) return run_case(options->case_file, run, options->end);
+    // The ranks compute the same and would say the same: rank 0 speaks for all (errors excepted).
+    if (world.rank() != 0) spdlog::default_logger()->set_level(spdlog::level::err);
     try {
-      run_case(options->case_file, run, options->end);
+      run_case(options->case_file, run, options->end, &world);
     } catch (const std::exception& e) {
       print_error(
           fmt::format("flotsam: rank {} of {}: {}\n", world.rank(), world.size(), e.what()));
