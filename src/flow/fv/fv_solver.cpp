@@ -353,13 +353,7 @@ void FiniteVolumeSolver::add_local_rate(int i, double h, double hu, double hv, d
 // reactions. The largest wave speed at its edges gives its Courant step (model.md (M-16)).
 void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U, bool courant) const {
   const CellMesh& c = cells_;
-  const RankSplit* split = part();
-  const std::span<const int> own = split ? split->own() : std::span<const int>(all_cells_);
-  const auto count = static_cast<std::ptrdiff_t>(own.size());
-  double dt_min = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static) reduction(min : dt_min)
-  for (std::ptrdiff_t index = 0; index < count; ++index) {
-    const int i = own[index];
+  const auto cell = [&](int i) {  // cell i's rates; its Courant step (infinite when still)
     double dh = 0.0, dx = 0.0, dy = 0.0, speed = 0.0;
     for (int k = 0; k < 3; ++k) {
       const EdgeRate r = edge_rate(i, k);
@@ -371,7 +365,18 @@ void FiniteVolumeSolver::sum_cell_rates(const ConservedState& U, bool courant) c
     rate_hu_[i] = dx / A;
     rate_hv_[i] = dy / A;
     add_local_rate(i, field_.h[i], U.hu[i], U.hv[i], rate_hu_[i], rate_hv_[i]);
-    if (speed > 0.0) dt_min = std::min(dt_min, c.length_scale[i] / speed);
+    return speed > 0.0 ? c.length_scale[i] / speed : std::numeric_limits<double>::infinity();
+  };
+  double dt_min = std::numeric_limits<double>::infinity();
+  const RankSplit* split = part();
+  if (split) {  // this rank's cells
+    const std::span<const int> own = split->own();
+    const auto n = static_cast<std::ptrdiff_t>(own.size());
+#pragma omp parallel for schedule(static) reduction(min : dt_min)
+    for (std::ptrdiff_t k = 0; k < n; ++k) dt_min = std::min(dt_min, cell(own[k]));
+  } else {
+#pragma omp parallel for schedule(static) reduction(min : dt_min)
+    for (int i = 0; i < c.cell_count; ++i) dt_min = std::min(dt_min, cell(i));
   }
   if (!courant) return;  // the second stage's: not needed (over ranks, a reduction saved)
   stage_courant_step_ = case_.flow.fv.courant * (split ? split->min(dt_min) : dt_min);
@@ -467,21 +472,26 @@ double FiniteVolumeSolver::courant_step() const {
 // L(U1)) + R, so each stage's boundary outflow counts half (the rain is counted whole by advance).
 bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState& y,
                                    ConservedState& out, double a, double b, double dt) {
-  const RankSplit* split = part();
-  const std::span<const int> own = split ? split->own() : std::span<const int>(all_cells_);
-  const auto n = static_cast<std::ptrdiff_t>(own.size());
   const double rain = rain_depth_;  // [m] times w_i
   const std::vector<double>& w = rain_.weights();
   const double* source = sources_.any() ? source_depth_.data() : nullptr;  // [m]
-  bool suspect = false;
-#pragma omp parallel for schedule(static) reduction(|| : suspect)
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
-    const int i = own[k];
+  const auto cell = [&](int i) {  // true when the result is suspect
     const double R = rain * w[i] + (source ? source[i] : 0.0);
     out.h[i] = a * U.h[i] + b * (y.h[i] + dt * rate_h_[i] + R);
     out.hu[i] = a * U.hu[i] + b * (y.hu[i] + dt * rate_hu_[i]);
     out.hv[i] = a * U.hv[i] + b * (y.hv[i] + dt * rate_hv_[i]);
-    suspect = suspect || !(out.h[i] >= 0.0) || !std::isfinite(out.hu[i] + out.hv[i]);
+    return !(out.h[i] >= 0.0) || !std::isfinite(out.hu[i] + out.hv[i]);
+  };
+  bool suspect = false;
+  const RankSplit* split = part();
+  if (split) {  // this rank's cells
+    const std::span<const int> own = split->own();
+    const auto n = static_cast<std::ptrdiff_t>(own.size());
+#pragma omp parallel for schedule(static) reduction(|| : suspect)
+    for (std::ptrdiff_t k = 0; k < n; ++k) suspect = cell(own[k]) || suspect;
+  } else {
+#pragma omp parallel for schedule(static) reduction(|| : suspect)
+    for (int i = 0; i < cells_.cell_count; ++i) suspect = cell(i) || suspect;
   }
   for (std::size_t g = 0; g < outflow_rate_.size(); ++g) {
     balance_.group_outflow[g] += 0.5 * dt * outflow_rate_[g];
