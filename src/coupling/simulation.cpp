@@ -306,10 +306,8 @@ void Simulation::check_diagnostics() {
 void Simulation::write_output_if_due(bool force) {
   if (!force && time_ < next_output_ - 1e-9 * case_.time.step) return;
   if (!force) synchronize_flows();  // every rank of a flood split over ranks, at the same times
-  if (!output_) {
-    while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
-    return;
-  }
+  while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
+  if (!output_) return;
   auto timed = timer_.time(Stage::output);
   std::vector<std::uint8_t> jammed;
   if (has_bodies_) {
@@ -321,7 +319,6 @@ void Simulation::write_output_if_due(bool force) {
                         bodies_);
   }
   output_->write(time_, *flow_, bodies_, has_bodies_, jammed);
-  while (next_output_ <= time_ + 1e-9 * case_.time.step) next_output_ += case_.output.interval;
   // A run rerun whole when interrupted has no use for a checkpoint of its start.
   if (!options_.rerun_whole || step_count_ > 0)
     write_checkpoint((output_->directory() / "checkpoint.bin").string());

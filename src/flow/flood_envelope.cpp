@@ -7,6 +7,7 @@
 #include <span>
 
 #include "core/error.hpp"
+#include "core/parallel_for.hpp"
 #include "flow/hazard.hpp"
 #include "io/binary_archive.hpp"
 
@@ -15,16 +16,8 @@ namespace flotsam {
 void FloodEnvelope::reset(int n, double wet_depth_threshold) {
   wet_depth = wet_depth_threshold;
   const auto cells = static_cast<std::size_t>(n);
-  max_depth.assign(cells, 0.0);
-  max_speed.assign(cells, 0.0);
-  max_unit_discharge.assign(cells, 0.0);
-  arrival.assign(cells, std::numeric_limits<double>::quiet_NaN());
-  wet_duration.assign(cells, 0.0);
-  max_hazard_rating.assign(cells, 0.0);
-  step_rating.assign(cells, 0.0);
-  step_rating_with_debris.assign(cells, 0.0);
-  australian_class.assign(cells, 0.0);
-  vehicle_class.assign(cells, 0.0);
+  for (std::vector<double>* a : per_cell_arrays()) a->assign(cells, 0.0);
+  arrival.assign(cells, std::numeric_limits<double>::quiet_NaN());  // never wet yet
 }
 
 void FloodEnvelope::update(const std::vector<double>& h, const std::vector<double>& hu,
@@ -50,15 +43,9 @@ void FloodEnvelope::update(const std::vector<double>& h, const std::vector<doubl
         wet_duration[i] += dt;
     }
   };
-  if (!cells.empty()) {
-    const auto n = static_cast<std::ptrdiff_t>(cells.size());
-#pragma omp parallel for schedule(static) if (n >= 20000)
-    for (std::ptrdiff_t k = 0; k < n; ++k) cell(cells[k]);
-    return;
-  }
-  const int n = size();
-#pragma omp parallel for schedule(static) if (n >= 20000)
-  for (int i = 0; i < n; ++i) cell(i);
+  if (cells.empty()) return parallel_for(size(), 20000, cell);
+  parallel_for(static_cast<std::ptrdiff_t>(cells.size()), std::ptrdiff_t{20000},
+               [&](std::ptrdiff_t k) { cell(cells[k]); });
 }
 
 void FloodEnvelope::start_step() {

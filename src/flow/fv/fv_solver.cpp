@@ -9,6 +9,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/parallel_for.hpp"
 #include "flow/bed.hpp"
 #include "flow/friction_map.hpp"
 #include "flow/fv/hllc_flux.hpp"
@@ -146,18 +147,13 @@ double FiniteVolumeSolver::wet_fraction() const {
 // ---- the finite-volume operator L -------------------------------------------------------
 
 void FiniteVolumeSolver::load_cells(const ConservedState& U) const {
+  const auto load = [&](int i) { load_cell(i, U.h[i], U.hu[i], U.hv[i]); };
   if (const RankSplit* split = part()) {  // this rank's cells and the two rings around them
     const std::span<const int> cells = split->loaded();
-    const auto n = static_cast<std::ptrdiff_t>(cells.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t k = 0; k < n; ++k) {
-      const int i = cells[k];
-      load_cell(i, U.h[i], U.hu[i], U.hv[i]);
-    }
-    return;
+    return parallel_for(static_cast<std::ptrdiff_t>(cells.size()), std::ptrdiff_t{0},
+                        [&](std::ptrdiff_t k) { load(cells[k]); });
   }
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < cells_.cell_count; ++i) load_cell(i, U.h[i], U.hu[i], U.hv[i]);
+  parallel_for(cells_.cell_count, 0, load);
 }
 
 void FiniteVolumeSolver::load_cell(int i, double h, double hu, double hv) const {
@@ -184,10 +180,6 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
                                              LevelRange levels) const {
   const CellMesh& c = cells_;
   const auto& conditions = case_.flow.boundaries;
-  const auto discharge = [&](int edge) {  // the edge's discharge condition, or -1
-    const int k = boundaries_.group_condition[c.group[edge]];
-    return k >= 0 && conditions[k].kind == BoundaryCondition::Kind::discharge ? k : -1;
-  };
   // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry). Over
   // ranks, each rank's edges' h^{3/2} go to every rank and the sums run over all of the mesh's
   // boundary edges in their order, as on one rank.
@@ -197,20 +189,20 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
     boundary_edges = c.boundary_edges;
   } else {
     for (const int edge : boundary_edges) {
-      if (discharge(edge) < 0) continue;
+      if (discharge_condition(edge) < 0) continue;
       const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
       edge_discharge_[edge] = h * std::sqrt(h);
     }
   }
   std::vector<double> weight_sum(conditions.size(), 0.0), length_sum(conditions.size(), 0.0);
   for (const int edge : boundary_edges) {
-    const int k = discharge(edge);
+    const int k = discharge_condition(edge);
     if (k < 0) continue;
     weight_sum[k] += c.length[edge] * edge_discharge_[edge];
     length_sum[k] += c.length[edge];
   }
   for (const int edge : boundary_edges) {
-    const int k = discharge(edge);
+    const int k = discharge_condition(edge);
     if (k < 0) continue;
     const double Q = conditions[k].value(t);
     edge_discharge_[edge] =
@@ -266,6 +258,12 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
   for (int edge : boundary_edges) outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
 }
 
+// The discharge condition of a boundary edge's group, or -1.
+int FiniteVolumeSolver::discharge_condition(int edge) const {
+  const int k = boundaries_.group_condition[cells_.group[edge]];
+  return k >= 0 && case_.flow.boundaries[k].kind == BoundaryCondition::Kind::discharge ? k : -1;
+}
+
 // h^{3/2} at every edge of a discharge condition, each formed by the rank that owns its cell.
 void FiniteVolumeSolver::gather_discharge_weights() const {
   const CellMesh& c = cells_;
@@ -277,8 +275,8 @@ void FiniteVolumeSolver::gather_discharge_weights() const {
   const std::vector<int>& B = c.boundary_edges;
   boundary_value_.assign(B.size(), 0.0);
   for (const int k : split_->boundary_positions()) {
-    const int edge = B[k], j = boundaries_.group_condition[c.group[edge]];
-    if (j < 0 || conditions[j].kind != BoundaryCondition::Kind::discharge) continue;
+    const int edge = B[k];
+    if (discharge_condition(edge) < 0) continue;
     const double h = face_value(field_, c.left[edge], c.left_slot[edge]).h;
     boundary_value_[k] = h * std::sqrt(h);
   }
@@ -421,15 +419,13 @@ void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) cons
 // whatever dt, where gamma at |u*| (the drive already added) would settle short of it.
 void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   if (friction_.law == FrictionLaw::none) return;
-  if (const RankSplit* split = part()) {
+  const auto friction = [&](int i) { apply_friction(U, i, dt); };
+  if (const RankSplit* split = part()) {  // this rank's cells
     const std::span<const int> own = split->own();
-    const auto n = static_cast<std::ptrdiff_t>(own.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t k = 0; k < n; ++k) apply_friction(U, own[k], dt);
-    return;
+    return parallel_for(static_cast<std::ptrdiff_t>(own.size()), std::ptrdiff_t{0},
+                        [&](std::ptrdiff_t k) { friction(own[k]); });
   }
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < cells_.cell_count; ++i) apply_friction(U, i, dt);
+  parallel_for(cells_.cell_count, 0, friction);
 }
 
 void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) const {

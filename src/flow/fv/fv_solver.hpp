@@ -155,6 +155,7 @@ class FiniteVolumeSolver {
   void apply_friction(ConservedState& U, double dt) const;
   void apply_body_drag(ConservedState& U, double dt);
   // One flood over ranks (rank_split.hpp): this rank's part of L and of the stages.
+  int discharge_condition(int edge) const;
   void gather_discharge_weights() const;
   /// This rank's split while advance() runs (each rank its own cells), else nullptr (all cells).
   const RankSplit* part() const { return advancing_ ? split_.get() : nullptr; }
