@@ -47,7 +47,10 @@ double closed_height(const GapLevel& level, const Bridge& bridge, double thickne
 
 void measure_opening_closure(JamStatistics& stats, const JamGeometry& geometry,
                              const std::vector<std::vector<GapLevel>>& levels) {
-  std::vector<double> closed(geometry.bridges.size(), 0.0);  // [m^2] per bridge
+  // [m^2] per bridge and gap: what the jams in it close, together
+  std::vector<std::vector<double>> closed(geometry.bridges.size());
+  for (std::size_t b = 0; b < geometry.bridges.size(); ++b)
+    closed[b].assign(geometry.bridges[b].gaps.size(), 0.0);
   for (Jam& jam : stats.jams) {
     jam.gap_opening_closed.clear();
     if (jam.bridge < 0) continue;
@@ -56,17 +59,20 @@ void measure_opening_closure(JamStatistics& stats, const JamGeometry& geometry,
       const GapLevel& level = levels[jam.bridge][g];
       const double width = bridge.gaps[g].width(), opening = opening_height(level, bridge);
       const double area = jam.gap_blockage[g] * width * closed_height(level, bridge, jam.thickness);
-      closed[jam.bridge] += area;
+      closed[jam.bridge][g] += area;
       jam.gap_opening_closed.push_back(opening > 0.0 ? area / (width * opening) : 0.0);
     }
   }
   stats.bridge_opening_closed.assign(geometry.bridges.size(), 0.0);
   for (std::size_t b = 0; b < geometry.bridges.size(); ++b) {
-    double total = 0.0;  // [m^2]
-    for (std::size_t g = 0; g < geometry.bridges[b].gaps.size(); ++g)
-      total +=
+    double total = 0.0, shut = 0.0;  // [m^2] the openings' area, the part of it closed
+    for (std::size_t g = 0; g < geometry.bridges[b].gaps.size(); ++g) {
+      const double area =
           geometry.bridges[b].gaps[g].width() * opening_height(levels[b][g], geometry.bridges[b]);
-    stats.bridge_opening_closed[b] = total > 0.0 ? closed[b] / total : 0.0;
+      total += area;
+      shut += std::min(closed[b][g], area);  // jams one behind the other close it once
+    }
+    stats.bridge_opening_closed[b] = total > 0.0 ? shut / total : 0.0;
   }
 }
 

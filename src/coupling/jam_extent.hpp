@@ -54,7 +54,7 @@ double closed_height(const GapLevel& level, const Bridge& bridge, double thickne
 
 /// Fills each jam's gap_opening_closed and the statistics' bridge_opening_closed: the share of
 /// each opening's area (its width times opening_height) the jams' covered widths close over
-/// their closed_height.
+/// their closed_height; several jams in one gap (one behind the other) close at most all of it.
 void measure_opening_closure(JamStatistics& statistics, const JamGeometry& geometry,
                              const std::vector<std::vector<GapLevel>>& levels);
 

@@ -46,7 +46,9 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
   for (std::size_t b = 0; b < bridges_.size(); ++b) {
     BridgeOutcome& bridge = bridges_[b];
     int bodies_at_bridge = 0;
-    std::vector<double> closed(gaps_[b].size(), 0.0);  // [-] per gap: the jams' shares add up
+    // [-] per gap: the jams' shares add up, to the whole opening at most (jams one behind the
+    // other close it once; measure_opening_closure)
+    std::vector<double> closed(gaps_[b].size(), 0.0);
     for (const Jam& jam : statistics.jams)
       if (jam.bridge == static_cast<int>(b)) {
         bodies_at_bridge += jam.body_count();
@@ -66,7 +68,7 @@ void BlockingMonitor::sample(double t, const JamStatistics& statistics, const Bo
       GapOutcome& gap = gaps_[b][g];
       double& streak = streak_start_[b][g];
       gap.max_cover = std::max(gap.max_cover, cover[g]);
-      gap.max_opening_closed = std::max(gap.max_opening_closed, closed[g]);
+      gap.max_opening_closed = std::max(gap.max_opening_closed, std::min(1.0, closed[g]));
       if (cover[g] < criterion_.fraction) {
         streak = nan;
         continue;

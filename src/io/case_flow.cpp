@@ -46,6 +46,7 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
         {{"elements", FvCells::elements}, {"split", FvCells::split}});
   fv.velocity_depth = m.number("velocity_depth", fv.velocity_depth, Range::positive());
   fv.time_levels = static_cast<int>(m.integer("time_levels", fv.time_levels, Range::between(1, 8)));
+  fv.pier_drag = m.number("pier_drag", fv.pier_drag, Range::between(0.0, 10.0));
   return fv;
 }
 

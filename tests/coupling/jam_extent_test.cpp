@@ -100,6 +100,23 @@ TEST(JamExtent, UnderADeckOnlyThePartOfTheJamBelowTheSoffitClosesTheOpening) {
   EXPECT_EQ(s.bridge_opening_closed[0], 0.0);
 }
 
+TEST(JamExtent, TwoJamsInOneGapCloseItOnce) {
+  // One jam against the piers and one behind it, each across the whole 25 m gap and deeper than
+  // the 3 m of water: the gap is closed, once; the bridge's other gaps (12.5 m each) are open.
+  const JamGeometry g = paper_geometry();
+  JamStatistics s;
+  for (int k = 0; k < 2; ++k) {
+    Jam jam;
+    jam.bridge = 0;
+    jam.gap_blockage = {0.0, 1.0, 0.0};
+    jam.thickness = 5.0;
+    s.jams.push_back(jam);
+  }
+  measure_opening_closure(s, g, flat_levels(g, 3.0, 0.0));
+  for (const Jam& jam : s.jams) EXPECT_NEAR(jam.gap_opening_closed[1], 1.0, tolerance);
+  EXPECT_NEAR(s.bridge_opening_closed[0], 25.0 / 50.0, tolerance);
+}
+
 TEST(JamExtent, BodiesOutOfEveryJamGetTheirDraftBack) {
   const JamGeometry g = paper_geometry();
   BodySet bodies = logs_as_accumulation(g);

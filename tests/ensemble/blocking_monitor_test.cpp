@@ -120,5 +120,21 @@ TEST_F(OneLogAtOnePier, KeepsTheLargestClosedShareOfTheOpenings) {
   EXPECT_EQ(back.bridges[0].max_opening_closed, r.bridges[0].max_opening_closed);
 }
 
+// Two jams one behind the other in gap 1, each reaching the bed (T = 3 m in 2 m of water) across
+// 20 m of its 22 m: each closes 10/11 of it, together the gap at most once.
+TEST_F(OneLogAtOnePier, TwoJamsInOneGapCloseItAtMostOnce) {
+  JamStatistics s = statistics(true);
+  s.jams[0].gap_blockage = {20.0 / 22.0, 0.0};
+  s.jams[0].thickness = 3.0;  // [m]
+  s.jams.push_back(s.jams[0]);
+  measure_opening_closure(s, geometry, {{{2.0, 0.0}, {2.0, 0.0}}});
+  BlockingMonitor monitor(geometry, {0.5, 2.0, 1.0});
+  monitor.sample(0.0, s, bodies, {});
+  MemberResult r;
+  monitor.finish(s, bodies, r);
+  EXPECT_EQ(r.gaps[0][0].max_opening_closed, 1.0);
+  EXPECT_NEAR(r.bridges[0].max_opening_closed, 0.5, 1e-15);  // gap 1 of two 22 m gaps
+}
+
 }  // namespace
 }  // namespace flotsam

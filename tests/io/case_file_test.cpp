@@ -638,9 +638,11 @@ TEST(CaseFileError, EngineKeysAreChecked) {
             "case.yaml:6: flow.fv.cells: unknown value 'quads'; expected one of: elements, split");
   EXPECT_EQ(error_of(fv("limiter: minmod")),
             "case.yaml:6: flow.fv.limiter: unknown key; allowed here: order, courant, cells, "
-            "velocity_depth, time_levels");
+            "velocity_depth, time_levels, pier_drag");
   EXPECT_EQ(error_of(fv("time_levels: 9")),
             "case.yaml:6: flow.fv.time_levels: expected an integer in [1, 8], got 9");
+  EXPECT_EQ(error_of(fv("pier_drag: -0.5")),
+            "case.yaml:6: flow.fv.pier_drag: expected a number in [0, 10], got -0.5");
 }
 
 TEST(CaseFileError, BedExpressionIsCheckedWhenRead) {

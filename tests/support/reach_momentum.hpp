@@ -14,14 +14,14 @@
 
 namespace flotsam::test {
 
-/// The finite-volume engine's interior edges on the line x = x0 (a line of cell edges of the mesh).
-inline std::vector<int> edges_on_line_x(const CellMesh& c, double x0) {
+/// The finite-volume engine's interior edges between the cells whose centroids lie on either
+/// side of the line x = x0: the line's own edges where it is a line of cell edges (a structured
+/// mesh), else a staircase of edges around it (an unstructured one).
+inline std::vector<int> edges_across_x(const CellMesh& c, double x0) {
   std::vector<int> edges;
   for (int e = 0; e < c.edge_count; ++e) {
-    const int i = c.left[e];
-    const Vec2 midpoint = c.centroid[i] + c.to_edge[i][c.left_slot[e]];
-    if (c.right[e] >= 0 && std::abs(midpoint.x() - x0) < 1e-9 && std::abs(c.normal[e].y()) < 1e-12)
-      edges.push_back(e);
+    const int i = c.left[e], j = c.right[e];
+    if (j >= 0 && (c.centroid[i].x() < x0) != (c.centroid[j].x() < x0)) edges.push_back(e);
   }
   return edges;
 }
@@ -59,7 +59,8 @@ inline double reach_momentum(const FlowEngine& flow, double x1, double x2) {
   return water_density_default * sum;
 }
 
-/// The reach between the lines of cell edges x1 < x2 and its momentum balance over a window:
+/// The reach between the lines x1 < x2 (lines of cell edges, or the staircases of edges around
+/// them) and its momentum balance over a window:
 /// start() when the window opens, sample() at each instant inside it, balance() at its end.
 class ReachBalance {
  public:
@@ -67,8 +68,8 @@ class ReachBalance {
       : x1_(x1),
         x2_(x2),
         cells_(dynamic_cast<const FvEngine&>(flow).solver().cells()),
-        upstream_(edges_on_line_x(cells_, x1)),
-        downstream_(edges_on_line_x(cells_, x2)) {}
+        upstream_(edges_across_x(cells_, x1)),
+        downstream_(edges_across_x(cells_, x2)) {}
   double upstream_width() const { return section_width(cells_, upstream_); }      // [m]
   double downstream_width() const { return section_width(cells_, downstream_); }  // [m]
   void start(const FlowEngine& flow) { momentum_start_ = reach_momentum(flow, x1_, x2_); }

@@ -7,6 +7,8 @@
 #include <span>
 #include <string>
 
+#include <spdlog/spdlog.h>
+
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "core/parallel_for.hpp"
@@ -74,6 +76,10 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   for (int i = 0; i < n; ++i) all_cells_[i] = i;
   outflow_rate_.assign(mesh.group_names.size(), 0.0);
   deck_edges_ = find_deck_edges(cells_, flow_case.bridges);
+  pier_drag_ = find_pier_drag(mesh, cells_, flow_case.bridges, flow.fv.pier_drag);
+  for (const PierDrag::Pier& pier : pier_drag_.piers)
+    spdlog::info("pier drag on {}: C_d {}, width {:.3g} m, over {} cells within it ({:.3g} m^2)",
+                 pier.name, flow.fv.pier_drag, pier.width, pier.cells, pier.ring_area);
   if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
     FrictionCoefficients k = flotsam::friction_coefficients(
         flow, cells_.centroid, [](int i) { return fmt::format("cell {}", i); });
@@ -385,7 +391,9 @@ SectionFlux FiniteVolumeSolver::section_flux(std::span<const int> edges, Vec2 di
   SectionFlux sum;
   for (const int e : edges) {
     const Vec2 n = cells_.normal[e];
-    const double sign = n.dot(direction) >= 0.0 ? 1.0 : -1.0, l = cells_.length[e];
+    const int i = cells_.left[e], j = cells_.right[e];
+    const Vec2 across = j >= 0 ? Vec2(cells_.centroid[j] - cells_.centroid[i]) : n;
+    const double sign = across.dot(direction) >= 0.0 ? 1.0 : -1.0, l = cells_.length[e];
     const double side = sign > 0.0 ? side_right_[e] : side_left_[e];  // the receiving cell's
     sum.discharge += l * sign * flux_mass_[e];
     sum.momentum += l * sign * (Vec2(flux_x_[e], flux_y_[e]) + side * n);
@@ -440,12 +448,28 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) con
   U.hv[i] *= factor;
 }
 
-// The bodies' drag after friction (body_drag.hpp), in the cells under them only: a few among
-// many, each on its own (the order does not change a bit).
-void FiniteVolumeSolver::apply_body_drag(ConservedState& U, double dt) {
+// The piers' and the bodies' drag after friction (pier_drag.hpp, body_drag.hpp), in the cells
+// near piers and under bodies only: a few among many, each on its own (the order does not change
+// a bit).
+void FiniteVolumeSolver::apply_drag(ConservedState& U, double dt) {
   const RankSplit* split = part();
+  for (const int i : pier_drag_.cells)
+    if (!split || split->owns(i)) apply_pier_drag(U, i, dt);
   for (const int i : body_drag_.cells)
     if (!split || split->owns(i)) body_drag_.apply(U, i, dt, dry_depth_);
+}
+
+// (M-25) backward Euler in the velocity, as friction: the speed s solves s (1 + dt m s) = |u*|.
+void FiniteVolumeSolver::apply_pier_drag(ConservedState& U, int i, double dt) {
+  const double h = U.h[i], m = pier_drag_.density[i];
+  if (m == 0.0 || h <= dry_depth_) return;
+  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
+  const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
+  const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * m * std::sqrt(u * u + v * v)));
+  const Vec2 before(U.hu[i], U.hv[i]);
+  U.hu[i] *= factor;
+  U.hv[i] *= factor;
+  pier_drag_.impulse[i] += (1.0 - factor) * cells_.area[i] * before;
 }
 
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
@@ -551,7 +575,7 @@ void FiniteVolumeSolver::advance(double dt) {
     balance_.sources += source_volume;
     apply_infiltration(U1_, h);
     apply_friction(U1_, h);
-    apply_body_drag(U1_, h);
+    apply_drag(U1_, h);
     exchange(U1_);
     std::swap(U_, U1_);
     U_.time = h == t_end - t ? t_end : t + h;
@@ -566,6 +590,7 @@ void FiniteVolumeSolver::advance(double dt) {
   U_.time = t_end;
   if (split_) {  // the whole state on every rank, and what the bodies' cells gave up
     gather(U_);
+    if (!pier_drag_.empty()) split_->gather(pier_drag_.impulse.data()->data(), 2);
     if (!body_drag_.empty()) {
       split_->gather(body_drag_.velocity_time.data()->data(), 2);
       split_->gather(body_drag_.time.data(), 1);

@@ -5,7 +5,10 @@
 //
 //   U1      = U^n + dt L(U^n) + R                  SSP Runge-Kutta 2 (Heun), (M-13)
 //   U2      = (U^n + U1 + dt L(U1) + R) / 2
-//   U^{n+1} = friction(infiltration(U2, dt), dt)   implicit, never reverses the flow (M-14)
+//   U^{n+1} = drag(friction(infiltration(U2, dt), dt), dt)
+//                                   implicit, never reverse the flow: friction (M-14), then the
+//                                   piers' drag (M-25, pier_drag.hpp) and the bodies'
+//                                   (body_drag.hpp)
 //
 // where L is the finite-volume operator:  reconstruct (reconstruction.hpp) -> edge fluxes
 // (hydrostatic reconstruction of Audusse et al. 2004 + HLLC, hllc_flux.hpp; boundaries by ghost
@@ -25,6 +28,7 @@
 #include "flow/fv/deck_flux.hpp"
 #include "flow/fv/flow_sources.hpp"
 #include "flow/fv/fv_boundary.hpp"
+#include "flow/fv/pier_drag.hpp"
 #include "flow/fv/rain_source.hpp"
 #include "flow/fv/rank_split.hpp"
 #include "flow/fv/reconstruction.hpp"
@@ -82,6 +86,9 @@ class FiniteVolumeSolver {
   /// The bodies' drag per cell, point-implicit after friction (body_drag.hpp); empty: none.
   void set_body_drag(BodyDrag drag) { body_drag_ = std::move(drag); }
   const BodyDrag& body_drag() const { return body_drag_; }
+  /// The piers' form drag (pier_drag.hpp), with the impulse the water has given them since this
+  /// solver started (a restart starts it again: it is not in checkpoints).
+  const PierDrag& pier_drag() const { return pier_drag_; }
   /// Advance only this rank's cells (rank_split.hpp); the state is whole again after advance().
   /// nullptr: every cell (one rank).
   void set_rank_split(std::shared_ptr<const RankSplit> split);
@@ -117,9 +124,11 @@ class FiniteVolumeSolver {
   double courant_step() const;
   double wet_fraction() const;  // [-] of the cells' area deeper than output.wet_depth
   /// The scheme's own fluxes through `edges` at the current state (L evaluated as a sub-step's
-  /// first stage does), each counted towards `direction`: the discharge and the momentum flux as
-  /// the cell on that side receives it (with its hydrostatic correction, (M-12)). A section's
-  /// momentum balance checked with these is the scheme's, whatever side a sampled value takes.
+  /// first stage does), each counted from its cell whose centroid lies behind along `direction`
+  /// to the other (a boundary edge: along its normal's side): the discharge and the momentum flux
+  /// as the receiving cell takes it (with its hydrostatic correction, (M-12)). A section's
+  /// momentum balance checked with these is the scheme's, whatever side a sampled value takes;
+  /// a section may be a staircase of edges (those between the cells on either side of a line).
   SectionFlux section_flux(std::span<const int> edges, Vec2 direction) const;
   double dry_depth() const { return dry_depth_; }                    // [m]
   double water_density() const { return case_.flow.water_density; }  // [kg/m^3]
@@ -153,7 +162,8 @@ class FiniteVolumeSolver {
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,
                  double b, double dt);
   void apply_friction(ConservedState& U, double dt) const;
-  void apply_body_drag(ConservedState& U, double dt);
+  void apply_drag(ConservedState& U, double dt);
+  void apply_pier_drag(ConservedState& U, int i, double dt);
   // One flood over ranks (rank_split.hpp): this rank's part of L and of the stages.
   int discharge_condition(int edge) const;
   void gather_discharge_weights() const;
@@ -202,6 +212,7 @@ class FiniteVolumeSolver {
   mutable CellField field_;       // the stage's reconstruction
   std::vector<Vec2> cell_force_;  // [N] body reactions
   BodyDrag body_drag_;
+  PierDrag pier_drag_;
   RainSource rain_;
   double rain_depth_ = 0.0;  // [m] int r dt over the current sub-step (times w_i per cell)
   FlowSources sources_;

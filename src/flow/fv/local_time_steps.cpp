@@ -300,6 +300,11 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& cells, double t_end
     for (std::ptrdiff_t k = 0; k < count; ++k)
       apply_friction(U1_, cells[k], level_step_[levels_->cell_level[cells[k]]]);
   }
+  if (!pier_drag_.empty()) {
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+      apply_pier_drag(U1_, cells[k], level_step_[levels_->cell_level[cells[k]]]);
+  }
   if (!body_drag_.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t k = 0; k < count; ++k)

@@ -62,7 +62,7 @@ TEST(FvSolver, SectionFluxOfAUniformFlowIsTheExactFlux) {
   std::fill(U.hu.begin(), U.hu.end(), h * u);
   std::fill(U.hv.begin(), U.hv.end(), h * v);
   s.set_state(U);
-  const std::vector<int> edges = test::edges_on_line_x(s.cells(), 5.0);
+  const std::vector<int> edges = test::edges_across_x(s.cells(), 5.0);
   ASSERT_NEAR(test::section_width(s.cells(), edges), W, 1e-12);
   const SectionFlux f = s.section_flux(edges, Vec2(1.0, 0.0));
   EXPECT_NEAR(f.discharge, h * u * W, 1e-12);
