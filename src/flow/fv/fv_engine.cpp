@@ -250,7 +250,29 @@ std::string FvEngine::summary() const {
              "updates, {}; wet (deeper than {:g} m) {:.1f} % of the area\n",
              solver_.cells().cell_count, s.count, finest, s.rejected, updates, courant,
              case_.output.wet_depth, 100.0 * solver_.wet_fraction()) +
-         ranks_summary() + hazard_summary();
+         piers_summary() + ranks_summary() + hazard_summary();
+}
+
+// The mean drag (M-25) each pier took over the run (since its start or restart), the first few.
+std::string FvEngine::piers_summary() const {
+  const PierDrag& drag = solver_.pier_drag();
+  if (drag.empty() || drag.duration <= 0.0) return "";
+  constexpr int listed = 6;
+  const double rho = case_.flow.water_density;  // [kg/m^3]
+  std::string line;
+  Vec2 total = Vec2::Zero();  // [m^4/s]
+  for (int p = 0; p < static_cast<int>(drag.piers.size()); ++p) {
+    const Vec2 impulse = drag.impulse_of(p);
+    total += impulse;
+    if (p < listed)
+      line += fmt::format("{}{} {:.3g} kN", p > 0 ? ", " : "", drag.piers[p].name,
+                          rho * impulse.norm() / drag.duration / 1e3);
+  }
+  if (drag.piers.size() > listed)
+    line += fmt::format(" and {} more, all together {:.3g} kN", drag.piers.size() - listed,
+                        rho * total.norm() / drag.duration / 1e3);
+  return fmt::format("piers            mean drag over {:g} s (C_d {:g}): {}\n", drag.duration,
+                     case_.flow.fv.pier_drag, line);
 }
 
 // One flood over ranks: this rank's part and what it spent and sent in communication.

@@ -52,6 +52,7 @@ class FvEngine final : public FlowEngine {
 
  private:
   std::string hazard_summary() const;
+  std::string piers_summary() const;
   std::string ranks_summary() const;
   /// The solver's state, balance, sub-step counts and envelopes as save() wrote them; the
   /// envelopes' running hazard rating too when `own_rating` (not a shared flow's step).

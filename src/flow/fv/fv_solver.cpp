@@ -79,7 +79,7 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   pier_drag_ = find_pier_drag(mesh, cells_, flow_case.bridges, flow.fv.pier_drag);
   for (const PierDrag::Pier& pier : pier_drag_.piers)
     spdlog::info("pier drag on {}: C_d {}, width {:.3g} m, over {} cells within it ({:.3g} m^2)",
-                 pier.name, flow.fv.pier_drag, pier.width, pier.cells, pier.ring_area);
+                 pier.name, flow.fv.pier_drag, pier.width, pier.ring.size(), pier.ring_area);
   if (friction_.law != FrictionLaw::none) {  // (M-19) at each cell's centroid
     FrictionCoefficients k = flotsam::friction_coefficients(
         flow, cells_.centroid, [](int i) { return fmt::format("cell {}", i); });
@@ -537,6 +537,7 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // hydrographs' volume, and since R >= 0 it never makes a depth negative.
 // Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
+  pier_drag_.duration += dt;
   if (case_.flow.fv.time_levels > 1) return advance_local(dt);
   struct Advancing {  // over ranks, each advances its own part while this lasts (part())
     bool& flag;

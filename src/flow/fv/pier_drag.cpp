@@ -22,7 +22,7 @@ double distance_to(const Segment& s, const Vec2& p) {  // [m]
 }
 
 // The outline's smallest width [m]: the least extent of its vertices along a direction, over
-// directions a degree apart (a circle's polygon gives its diameter to (1 - cos 0.5 deg)).
+// directions a degree apart (within a factor 1 - cos(0.5 deg) of the exact one).
 double smallest_width(const std::vector<Segment>& outline) {
   double width = std::numeric_limits<double>::max();
   for (int k = 0; k < 180; ++k) {
@@ -71,42 +71,53 @@ Vec2 PierDrag::total_impulse() const {
   return sum;
 }
 
+Vec2 PierDrag::impulse_of(int p) const {
+  Vec2 sum = Vec2::Zero();
+  for (const int i : piers[p].ring) sum += (piers[p].density / density[i]) * impulse[i];
+  return sum;
+}
+
 PierDrag find_pier_drag(const Mesh& mesh, const CellMesh& cells,
                         const std::vector<BridgeConfig>& bridges, double drag_coefficient) {
   PierDrag drag;
   if (drag_coefficient <= 0.0) return drag;
-  // Each pier's outline: its group's boundary edges, from their left cells' corners.
+  // Each pier's outline: its group's boundary edges, from their left cells' corners; and those
+  // cells, in its ring whatever their size (a pier narrower than the cells beside it).
   std::vector<std::vector<Segment>> outlines(mesh.group_names.size());
+  std::vector<std::vector<int>> beside(mesh.group_names.size());
   for (const int e : cells.boundary_edges) {
     const int group = cells.group[e];
     if (!is_pier(mesh.group_names[group], bridges)) continue;
     const int i = cells.left[e], k = cells.left_slot[e];
     outlines[group].push_back(
         {mesh.nodes[cells.corners[i][k]], mesh.nodes[cells.corners[i][(k + 1) % 3]]});
+    beside[group].push_back(i);
   }
   for (std::size_t group = 0; group < outlines.size(); ++group) {
     const std::vector<Segment>& outline = outlines[group];
     if (outline.empty()) continue;
     const double diameter = circle_diameter(outline);
-    PierDrag::Pier pier{mesh.group_names[group],
-                        diameter > 0.0 ? diameter : smallest_width(outline), 0.0, 0};
+    PierDrag::Pier pier;
+    pier.name = mesh.group_names[group];
+    pier.width = diameter > 0.0 ? diameter : smallest_width(outline);
     Vec2 low = outline.front().a, high = low;
     for (const Segment& s : outline) low = low.cwiseMin(s.a), high = high.cwiseMax(s.a);
     low -= Vec2::Constant(pier.width), high += Vec2::Constant(pier.width);
-    std::vector<int> ring;
+    std::vector<int>& ring = pier.ring;
     for (int i = 0; i < cells.cell_count; ++i) {
       const Vec2& c = cells.centroid[i];
       if (c.x() < low.x() || c.y() < low.y() || c.x() > high.x() || c.y() > high.y()) continue;
-      const bool near = std::ranges::any_of(
-          outline, [&](const Segment& s) { return distance_to(s, c) <= pier.width; });
+      const bool near =
+          std::ranges::any_of(outline,
+                              [&](const Segment& s) { return distance_to(s, c) <= pier.width; }) ||
+          std::ranges::find(beside[group], i) != beside[group].end();
       if (!near) continue;
       ring.push_back(i);
       pier.ring_area += cells.area[i];
     }
     if (drag.density.empty()) drag.density.assign(cells.cell_count, 0.0);
-    for (const int i : ring)  // (M-25) m_i = C_d b / (2 A_r)
-      drag.density[i] += drag_coefficient * pier.width / (2.0 * pier.ring_area);
-    pier.cells = static_cast<int>(ring.size());
+    pier.density = drag_coefficient * pier.width / (2.0 * pier.ring_area);  // (M-25) C_d b / 2 A_r
+    for (const int i : ring) drag.density[i] += pier.density;
     drag.piers.push_back(std::move(pier));
   }
   for (int i = 0; i < static_cast<int>(drag.density.size()); ++i)

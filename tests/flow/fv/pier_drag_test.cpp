@@ -54,7 +54,7 @@ TEST(PierDrag, EachPiersRingTakesCdTimesItsWidthOverTwo) {
     EXPECT_LE(d, drag.piers[p].width + 1e-9);
   }
   EXPECT_NEAR(sum, expected, 1e-12 * expected);
-  EXPECT_EQ(drag.piers[0].cells + drag.piers[1].cells, static_cast<int>(drag.cells.size()));
+  EXPECT_EQ(drag.piers[0].ring.size() + drag.piers[1].ring.size(), drag.cells.size());
   EXPECT_TRUE(find_pier_drag(mesh, cells, {}, 0.0).empty());
 }
 
@@ -76,6 +76,30 @@ TEST(PierDrag, AnOutlinesWidthIsItsSmallestAndACirclesItsDiameter) {
   EXPECT_EQ(drag.piers[0].name, "pier_1");
   EXPECT_NEAR(drag.piers[0].width, 1.5, 1e-9);  // not its polygon's narrower width
   EXPECT_NEAR(drag.piers[1].width, 1.0, 1e-9);  // a 4 m x 1 m wall along the flow
+}
+
+TEST(PierDrag, OverlappingRingsShareEachCellsImpulseInTheRatioOfTheirDrag) {
+  // Two piers of 1.5 m, 2.5 m apart centre to centre: their rings (out to 2.25 m from each
+  // centre) overlap between them. With a unit impulse in every ring cell, the piers' shares add
+  // up to the cells' count.
+  MeshSource source;
+  source.kind = MeshSource::Kind::region;
+  source.element_order = 1;
+  RegionGeometry& r = source.region;
+  r.outline = {{{0, 0}, {40, 0}, {40, 20}, {0, 20}}, "outline"};
+  r.piers = {{{15, 10}, 0.75}, {{17.5, 10}, 0.75}};
+  r.mesh_size = 2.0;
+  r.pier_mesh_size = 0.3;
+  r.refine_distance = 4.0;
+  const Mesh mesh = generate_mesh(source);
+  const CellMesh cells = build_cell_mesh(mesh, FvCells::elements);
+  PierDrag drag = find_pier_drag(mesh, cells, {}, 1.2);
+  ASSERT_EQ(drag.piers.size(), 2u);
+  ASSERT_LT(drag.cells.size(), drag.piers[0].ring.size() + drag.piers[1].ring.size());  // shared
+  for (const int i : drag.cells) drag.impulse[i] = Vec2(1.0, 0.0);
+  const Vec2 sum = drag.impulse_of(0) + drag.impulse_of(1);
+  EXPECT_NEAR(sum.x(), static_cast<double>(drag.cells.size()), 1e-12 * drag.cells.size());
+  EXPECT_EQ(drag.total_impulse().x(), static_cast<double>(drag.cells.size()));
 }
 
 TEST(PierDrag, ALakeAtRestAroundPiersStaysAtRest) {
