@@ -258,19 +258,21 @@ std::string FvEngine::piers_summary() const {
   const PierDrag& drag = solver_.pier_drag();
   if (drag.empty() || drag.duration <= 0.0) return "";
   constexpr int listed = 6;
-  const double rho = case_.flow.water_density;  // [kg/m^3]
+  const auto mean_kn = [&](const Vec2& impulse) {  // [m^4/s] -> mean force [kN]
+    return case_.flow.water_density * impulse.norm() / drag.duration / 1e3;
+  };
   std::string line;
   Vec2 total = Vec2::Zero();  // [m^4/s]
   for (int p = 0; p < static_cast<int>(drag.piers.size()); ++p) {
     const Vec2 impulse = drag.impulse_of(p);
     total += impulse;
     if (p < listed)
-      line += fmt::format("{}{} {:.3g} kN", p > 0 ? ", " : "", drag.piers[p].name,
-                          rho * impulse.norm() / drag.duration / 1e3);
+      line +=
+          fmt::format("{}{} {:.3g} kN", p > 0 ? ", " : "", drag.piers[p].name, mean_kn(impulse));
   }
   if (drag.piers.size() > listed)
     line += fmt::format(" and {} more, all together {:.3g} kN", drag.piers.size() - listed,
-                        rho * total.norm() / drag.duration / 1e3);
+                        mean_kn(total));
   return fmt::format("piers            mean drag over {:g} s (C_d {:g}): {}\n", drag.duration,
                      case_.flow.fv.pier_drag, line);
 }

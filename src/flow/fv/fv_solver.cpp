@@ -32,6 +32,13 @@ inline double velocity(double h, double hu, double eps4) {
   return h4 >= eps4 ? hu / h : std::sqrt(2.0) * h * hu / std::sqrt(h4 + eps4);
 }
 
+// Backward Euler in the velocity for a drag quadratic in it, du/dt = -gamma u with gamma
+// proportional to |u| (friction (M-14), the piers' drag (M-25)): the new speed s solves
+// s (1 + dt gamma s / |u*|) = |u*|, so u^{n+1} = u* times this factor, in (0, 1].
+inline double quadratic_drag_factor(double dt, double gamma) {
+  return 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * gamma));
+}
+
 // The value of the reconstruction of cell i at the midpoint of its local edge k; the bed there
 // is eta_e - h_e (model.md (M-12)).
 inline FaceState face_value(const CellField& f, int i, int k) {
@@ -436,14 +443,18 @@ void FiniteVolumeSolver::apply_friction(ConservedState& U, double dt) const {
   parallel_for(cells_.cell_count, 0, friction);
 }
 
+// Cell i's speed |u| [m/s], desingularised below H_eps (M-15).
+double FiniteVolumeSolver::speed(const ConservedState& U, int i) const {
+  const double h = U.h[i], eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
+  const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
+  return std::sqrt(u * u + v * v);
+}
+
 void FiniteVolumeSolver::apply_friction(ConservedState& U, int i, double dt) const {
   const double h = U.h[i];
   if (h <= 0.0) return;
-  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
-  const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
-  const double speed = std::sqrt(u * u + v * v);
-  const double gamma = friction_.rate(speed, h, friction_coefficient_[i]);  // [1/s]
-  const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * gamma));
+  const double gamma = friction_.rate(speed(U, i), h, friction_coefficient_[i]);  // [1/s]
+  const double factor = quadratic_drag_factor(dt, gamma);
   U.hu[i] *= factor;
   U.hv[i] *= factor;
 }
@@ -459,13 +470,11 @@ void FiniteVolumeSolver::apply_drag(ConservedState& U, double dt) {
     if (!split || split->owns(i)) body_drag_.apply(U, i, dt, dry_depth_);
 }
 
-// (M-25) backward Euler in the velocity, as friction: the speed s solves s (1 + dt m s) = |u*|.
+// (M-25) backward Euler in the velocity, as friction: gamma = m_i |u*|.
 void FiniteVolumeSolver::apply_pier_drag(ConservedState& U, int i, double dt) {
-  const double h = U.h[i], m = pier_drag_.density[i];
-  if (m == 0.0 || h <= dry_depth_) return;
-  const double eps2 = velocity_depth_ * velocity_depth_, eps4 = eps2 * eps2;
-  const double u = velocity(h, U.hu[i], eps4), v = velocity(h, U.hv[i], eps4);
-  const double factor = 2.0 / (1.0 + std::sqrt(1.0 + 4.0 * dt * m * std::sqrt(u * u + v * v)));
+  const double m = pier_drag_.density[i];
+  if (m == 0.0 || U.h[i] <= dry_depth_) return;
+  const double factor = quadratic_drag_factor(dt, m * speed(U, i));
   const Vec2 before(U.hu[i], U.hv[i]);
   U.hu[i] *= factor;
   U.hv[i] *= factor;

@@ -157,6 +157,7 @@ class FiniteVolumeSolver {
   EdgeRate edge_rate(int i, int k) const;
   void add_local_rate(int i, double h, double hu, double hv, double& ru, double& rv) const;
   void load_cell(int i, double h, double hu, double hv) const;
+  double speed(const ConservedState& U, int i) const;
   void apply_friction(ConservedState& U, int i, double dt) const;
   void sum_cell_rates(const ConservedState& U, bool courant = true) const;
   bool add_stage(const ConservedState& U, const ConservedState& y, ConservedState& out, double a,

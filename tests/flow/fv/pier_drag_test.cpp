@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "../../support/two_pier_channel.hpp"
 #include "flow/fv/fv_solver.hpp"
@@ -16,6 +17,23 @@ namespace {
 Mesh channel_mesh() {
   MeshSource source = test::two_pier_channel();  // piers r = 10 m at (60, 30), 8 m at (140, 25)
   source.element_order = 1;
+  return generate_mesh(source);
+}
+
+// A region 20 m wide from x = 0 to `length` with the given circular piers and pier outlines,
+// meshed at 2 m refined to `pier_mesh_size` on the piers, in three-node triangles.
+Mesh region_with_piers(double length, std::vector<Pier> piers, std::vector<NamedRing> outlines,
+                       double pier_mesh_size, double refine_distance) {
+  MeshSource source;
+  source.kind = MeshSource::Kind::region;
+  source.element_order = 1;
+  RegionGeometry& r = source.region;
+  r.outline = {{{0, 0}, {length, 0}, {length, 20}, {0, 20}}, "outline"};
+  r.piers = std::move(piers);
+  r.pier_outlines = std::move(outlines);
+  r.mesh_size = 2.0;
+  r.pier_mesh_size = pier_mesh_size;
+  r.refine_distance = refine_distance;
   return generate_mesh(source);
 }
 
@@ -59,17 +77,9 @@ TEST(PierDrag, EachPiersRingTakesCdTimesItsWidthOverTwo) {
 }
 
 TEST(PierDrag, AnOutlinesWidthIsItsSmallestAndACirclesItsDiameter) {
-  MeshSource source;
-  source.kind = MeshSource::Kind::region;
-  source.element_order = 1;
-  RegionGeometry& r = source.region;
-  r.outline = {{{0, 0}, {60, 0}, {60, 20}, {0, 20}}, "outline"};
-  r.piers = {{{15, 10}, 0.75}};                                                  // pier_1
-  r.pier_outlines = {{{{28, 9.5}, {32, 9.5}, {32, 10.5}, {28, 10.5}}, "wall"}};  // pier_2
-  r.mesh_size = 2.0;
-  r.pier_mesh_size = 0.5;
-  r.refine_distance = 5.0;
-  const Mesh mesh = generate_mesh(source);
+  const Mesh mesh =
+      region_with_piers(60.0, {{{15, 10}, 0.75}},  // pier_1; pier_2 a wall:
+                        {{{{28, 9.5}, {32, 9.5}, {32, 10.5}, {28, 10.5}}, "wall"}}, 0.5, 5.0);
   const CellMesh cells = build_cell_mesh(mesh, FvCells::elements);
   const PierDrag drag = find_pier_drag(mesh, cells, {}, 2.0);
   ASSERT_EQ(drag.piers.size(), 2u);
@@ -82,16 +92,7 @@ TEST(PierDrag, OverlappingRingsShareEachCellsImpulseInTheRatioOfTheirDrag) {
   // Two piers of 1.5 m, 2.5 m apart centre to centre: their rings (out to 2.25 m from each
   // centre) overlap between them. With a unit impulse in every ring cell, the piers' shares add
   // up to the cells' count.
-  MeshSource source;
-  source.kind = MeshSource::Kind::region;
-  source.element_order = 1;
-  RegionGeometry& r = source.region;
-  r.outline = {{{0, 0}, {40, 0}, {40, 20}, {0, 20}}, "outline"};
-  r.piers = {{{15, 10}, 0.75}, {{17.5, 10}, 0.75}};
-  r.mesh_size = 2.0;
-  r.pier_mesh_size = 0.3;
-  r.refine_distance = 4.0;
-  const Mesh mesh = generate_mesh(source);
+  const Mesh mesh = region_with_piers(40.0, {{{15, 10}, 0.75}, {{17.5, 10}, 0.75}}, {}, 0.3, 4.0);
   const CellMesh cells = build_cell_mesh(mesh, FvCells::elements);
   PierDrag drag = find_pier_drag(mesh, cells, {}, 1.2);
   ASSERT_EQ(drag.piers.size(), 2u);
