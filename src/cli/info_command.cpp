@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/logging.hpp"
 #include "flow/fv/partition.hpp"
+#include "flow/fv/time_levels.hpp"
 #include "io/case_file.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_summary.hpp"
@@ -70,8 +71,11 @@ void add_info_command(CLI::App& app) {
     if (*parts > 0) {
       const CellMesh cells =
           build_cell_mesh(mesh, c ? c->flow.fv.cells : FiniteVolumeConfig{}.cells);
-      const std::vector<int> part = partition_cells(cells, *parts);
-      text += format_partition(summarize_partition(cells, part, *parts), *parts);
+      const int levels = c ? c->flow.fv.time_levels : 1;  // fine cells weigh their updates
+      const std::vector<int> weights =
+          levels > 1 ? size_weights(cells, levels) : std::vector<int>{};
+      const std::vector<int> part = partition_cells(cells, *parts, weights);
+      text += format_partition(summarize_partition(cells, part, *parts, weights), *parts);
     }
     print_result(text);
   });

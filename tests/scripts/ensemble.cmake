@@ -41,7 +41,8 @@ set_tests_properties(cli.ensemble_bridge_on_a_region_mesh PROPERTIES LABELS "cli
                      ENVIRONMENT "${test_environment}" FIXTURES_REQUIRED cli_ensemble_bridge)
 
 # One flood over MPI ranks (finite volumes): the same files bit for bit on 1-4 ranks and after a
-# restart moved from 2 to 3 ranks (ranks_check.sh); the FEM is refused on every rank with a
+# restart moved from 2 to 3 ranks (ranks_check.sh), with one time level and with three (300 s:
+# a cycle retried at half the step between 200 and 300 s); the FEM is refused on every rank with a
 # message naming the engine, before anything is written.
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
   add_test(NAME cli.run_split_over_ranks_bit_for_bit
@@ -50,6 +51,12 @@ if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
                    ${CMAKE_CURRENT_BINARY_DIR}/ranks_work)
   set_tests_properties(cli.run_split_over_ranks_bit_for_bit PROPERTIES LABELS "cli"
                        ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
+  add_test(NAME cli.run_split_over_ranks_with_time_levels_bit_for_bit
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/ranks_check.sh $<TARGET_FILE:flotsam>
+                   ${PROJECT_SOURCE_DIR}/examples/dam_break_valley.yaml
+                   ${CMAKE_CURRENT_BINARY_DIR}/ranks_levels_work 3 300)
+  set_tests_properties(cli.run_split_over_ranks_with_time_levels_bit_for_bit PROPERTIES
+                       LABELS "cli" ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
   add_test(NAME cli.run_fem_on_two_ranks_is_refused
            COMMAND bash -c
                    "rm -rf ranks2 && ! mpirun --oversubscribe -n 2 \"$0\" run \"$1\" -o ranks2 --end 2 -q >out.txt 2>&1 && grep -q 'flow.engine: fem does not split one flood over MPI ranks (2 were started)' out.txt && test ! -e ranks2 && mpirun -n 1 \"$0\" run \"$1\" -o ranks1 --end 2 -q --overwrite >/dev/null 2>&1 && test -f ranks1/checkpoint.bin || { cat out.txt; exit 1; }"

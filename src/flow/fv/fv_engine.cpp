@@ -37,7 +37,11 @@ void FvEngine::initialize() {
 }
 
 void FvEngine::split_over_ranks(int rank, int ranks) {
-  solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks));
+  const int levels = case_.flow.fv.time_levels;
+  const std::vector<int> weights =
+      levels > 1 ? size_weights(solver_.cells(), levels) : std::vector<int>{};
+  solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks, weights,
+                                                           solver_.open_boundary()));
 }
 
 void FvEngine::synchronize() {

@@ -194,12 +194,12 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
   const CellMesh& c = cells_;
   const auto& conditions = case_.flow.boundaries;
   // Discharge conditions: Q(t) shared along the group as h^{3/2} (by length when dry). Over
-  // ranks, each rank's edges' h^{3/2} go to every rank and the sums run over all of the mesh's
-  // boundary edges in their order, as on one rank.
+  // ranks (`edges` this rank's, `boundary_edges` still every rank's), each edge's h^{3/2} is
+  // formed by its cell's owner and goes to every rank, and the sums run over `boundary_edges` in
+  // their order, as on one rank.
   const RankSplit* split = part();
   if (split) {
-    gather_discharge_weights();
-    boundary_edges = c.boundary_edges;
+    gather_discharge_weights(boundary_edges);
   } else {
     for (const int edge : boundary_edges) {
       if (discharge_condition(edge) < 0) continue;
@@ -244,10 +244,7 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
     const EdgeState left{h_L, L.u * n.x() + L.v * n.y(), -L.u * n.y() + L.v * n.x()};
     const EdgeState right{h_R, R.u * n.x() + R.v * n.y(), -R.u * n.y() + R.v * n.x()};
     EdgeFlux f = hllc_flux(left, right, g);
-    const bool wall =
-        j < 0 && (condition < 0 || conditions[condition].kind == BoundaryCondition::Kind::wall ||
-                  conditions[condition].kind == BoundaryCondition::Kind::noslip);
-    if (wall) f.mass = f.momentum_t = 0.0;  // nothing crosses a wall
+    if (j < 0 && !open_edge(edge)) f.mass = f.momentum_t = 0.0;  // nothing crosses a wall
     flux_mass_[edge] = f.mass;
     flux_x_[edge] = f.momentum_n * n.x() - f.momentum_t * n.y();
     flux_y_[edge] = f.momentum_n * n.y() + f.momentum_t * n.x();
@@ -258,17 +255,31 @@ void FiniteVolumeSolver::compute_edge_fluxes(std::span<const int> edges,
 
   deck_fluxes(levels);
 
-  std::fill(outflow_rate_.begin(), outflow_rate_.end(), 0.0);
-  if (split) {  // every rank's boundary edges' outflow, summed in the mesh's order
+  // Over ranks, the open edges' fluxes from their owners (a wall's is 0 on every rank).
+  if (split && std::any_of(boundary_edges.begin(), boundary_edges.end(),
+                           [this](int e) { return open_edge(e); })) {
     const std::vector<int>& B = c.boundary_edges;
     boundary_value_.assign(B.size(), 0.0);
-    for (const int k : split->boundary_positions())
-      boundary_value_[k] = c.length[B[k]] * flux_mass_[B[k]];
+    for (const int k : split->boundary_positions()) boundary_value_[k] = flux_mass_[B[k]];
     split->gather_boundary(boundary_value_);
-    for (std::size_t k = 0; k < B.size(); ++k) outflow_rate_[c.group[B[k]]] += boundary_value_[k];
-    return;
+    for (const int k : split->gathered_positions()) flux_mass_[B[k]] = boundary_value_[k];
   }
+  std::fill(outflow_rate_.begin(), outflow_rate_.end(), 0.0);
   for (int edge : boundary_edges) outflow_rate_[c.group[edge]] += c.length[edge] * flux_mass_[edge];
+}
+
+// Whether water may cross a boundary edge: its group has a condition other than a wall.
+bool FiniteVolumeSolver::open_edge(int edge) const {
+  const int k = boundaries_.group_condition[cells_.group[edge]];
+  if (k < 0) return false;
+  const BoundaryCondition::Kind kind = case_.flow.boundaries[k].kind;
+  return kind != BoundaryCondition::Kind::wall && kind != BoundaryCondition::Kind::noslip;
+}
+
+std::vector<char> FiniteVolumeSolver::open_boundary() const {
+  std::vector<char> open;
+  for (const int e : cells_.boundary_edges) open.push_back(open_edge(e) ? 1 : 0);
+  return open;
 }
 
 // The discharge condition of a boundary edge's group, or -1.
@@ -277,13 +288,12 @@ int FiniteVolumeSolver::discharge_condition(int edge) const {
   return k >= 0 && case_.flow.boundaries[k].kind == BoundaryCondition::Kind::discharge ? k : -1;
 }
 
-// h^{3/2} at every edge of a discharge condition, each formed by the rank that owns its cell.
-void FiniteVolumeSolver::gather_discharge_weights() const {
+// h^{3/2} at every edge of a discharge condition among `boundary_edges`, each formed by the rank
+// that owns its cell.
+void FiniteVolumeSolver::gather_discharge_weights(std::span<const int> boundary_edges) const {
   const CellMesh& c = cells_;
-  const auto& conditions = case_.flow.boundaries;
-  if (std::none_of(conditions.begin(), conditions.end(), [](const BoundaryCondition& b) {
-        return b.kind == BoundaryCondition::Kind::discharge;
-      }))
+  if (std::none_of(boundary_edges.begin(), boundary_edges.end(),
+                   [this](int e) { return discharge_condition(e) >= 0; }))
     return;
   const std::vector<int>& B = c.boundary_edges;
   boundary_value_.assign(B.size(), 0.0);
@@ -294,7 +304,7 @@ void FiniteVolumeSolver::gather_discharge_weights() const {
     boundary_value_[k] = h * std::sqrt(h);
   }
   split_->gather_boundary(boundary_value_);
-  for (std::size_t k = 0; k < B.size(); ++k) edge_discharge_[B[k]] = boundary_value_[k];
+  for (const int k : split_->gathered_positions()) edge_discharge_[B[k]] = boundary_value_[k];
 }
 
 // The edges a deck stands on (deck_flux.hpp), once the water reaches its soffit on either side:
@@ -417,7 +427,7 @@ void FiniteVolumeSolver::evaluate_fluxes(const ConservedState& U, double t) cons
   load_cells(U);
   if (const RankSplit* split = part()) {
     reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_, split->reconstructed());
-    compute_edge_fluxes(split->edges(), {}, t, {});
+    compute_edge_fluxes(split->edges(), cells_.boundary_edges, t, {});
     return;
   }
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_);
@@ -547,11 +557,11 @@ bool FiniteVolumeSolver::add_stage(const ConservedState& U, const ConservedState
 // Infiltration follows the stages (it cannot fail), then friction.
 void FiniteVolumeSolver::advance(double dt) {
   pier_drag_.duration += dt;
-  if (case_.flow.fv.time_levels > 1) return advance_local(dt);
   struct Advancing {  // over ranks, each advances its own part while this lasts (part())
     bool& flag;
     ~Advancing() { flag = false; }
   } advancing{advancing_ = true};
+  if (case_.flow.fv.time_levels > 1) return advance_local(dt);
   const double t_end = U_.time + dt;
   U1_.h.resize(U_.h.size());
   U1_.hu.resize(U_.h.size());
@@ -598,25 +608,24 @@ void FiniteVolumeSolver::advance(double dt) {
     if (sub_step_observer_) sub_step_observer_(U_.time, h);
   }
   U_.time = t_end;
-  if (split_) {  // the whole state on every rank, and what the bodies' cells gave up
-    gather(U_);
-    if (!pier_drag_.empty()) split_->gather(pier_drag_.impulse.data()->data(), 2);
-    if (!body_drag_.empty()) {
-      split_->gather(body_drag_.velocity_time.data()->data(), 2);
-      split_->gather(body_drag_.time.data(), 1);
-    }
-  }
+  gather_step();
   balance_.volume = volume();
 }
 
+// Over ranks, after a step: the whole state on every rank, and what the bodies' and the piers'
+// cells gave up.
+void FiniteVolumeSolver::gather_step() {
+  if (!split_) return;
+  gather(U_);
+  if (!pier_drag_.empty()) split_->gather(pier_drag_.impulse.data()->data(), 2);
+  if (!body_drag_.empty()) {
+    split_->gather(body_drag_.velocity_time.data()->data(), 2);
+    split_->gather(body_drag_.time.data(), 1);
+  }
+}
+
 void FiniteVolumeSolver::set_rank_split(std::shared_ptr<const RankSplit> split) {
-  const FlowConfig& flow = case_.flow;
   const std::string file = case_.file.empty() ? "case" : case_.file;
-  if (split && split->size() > 1 && flow.fv.time_levels > 1)
-    throw_input_error(
-        "{}: flow.fv.time_levels: {} is not supported on several MPI ranks yet (issue 41); run "
-        "one flood over ranks with time_levels: 1, or on one rank",
-        file, flow.fv.time_levels);
   if (split && split->size() > 1 && rain_.infiltrating())
     throw_input_error(
         "{}: flow.rain infiltration is not supported on several MPI ranks yet (issue 41); run it "

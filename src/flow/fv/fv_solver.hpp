@@ -103,6 +103,9 @@ class FiniteVolumeSolver {
   void set_rain_weights(std::vector<double> weights) { rain_.set_weights(std::move(weights)); }
   const RainSource& rain() const { return rain_; }
   const FlowSources& sources() const { return sources_; }
+  /// Per edge of cells().boundary_edges: 1 where water may cross it (a condition other than a
+  /// wall), the edges whose values the ranks gather (rank_split.hpp).
+  std::vector<char> open_boundary() const;
 
   /// The state's cell values and limited gradients (what the bodies sample).
   void fill_field(CellField& field) const;
@@ -167,7 +170,8 @@ class FiniteVolumeSolver {
   void apply_pier_drag(ConservedState& U, int i, double dt);
   // One flood over ranks (rank_split.hpp): this rank's part of L and of the stages.
   int discharge_condition(int edge) const;
-  void gather_discharge_weights() const;
+  bool open_edge(int edge) const;
+  void gather_discharge_weights(std::span<const int> boundary_edges) const;
   /// This rank's split while advance() runs (each rank its own cells), else nullptr (all cells).
   const RankSplit* part() const { return advancing_ ? split_.get() : nullptr; }
   void exchange(ConservedState& U) const;
@@ -177,11 +181,16 @@ class FiniteVolumeSolver {
   std::vector<std::vector<int>> tied_cells() const;
   void choose_levels(double dt0, int cap);
   int local_cycle(double t0, double dt0);
-  void evaluate_part(const EdgeSet& part, double t, LevelRange levels, bool first_stage);
+  /// The cycle's levels as this rank advances them: *levels_, or its share over ranks.
+  const TimeLevels& my_levels();
+  void exchange_steps(bool with_state);
+  void evaluate_part(const EdgeSet& part, std::span<const int> boundary_edges, double t,
+                     LevelRange levels, bool first_stage);
   void take_shares(std::span<const int> edges, std::span<const int> boundary_edges,
                    bool first_stage);
-  void start_steps(const std::vector<int>& cells, double t);
-  int finish_steps(const std::vector<int>& cells, double t_end);
+  void start_steps(const std::vector<int>& all, const std::vector<int>& mine, double t);
+  int finish_steps(const std::vector<int>& all, const std::vector<int>& mine, double t_end);
+  void gather_step();
   void apply_infiltration(ConservedState& U, double dt);
   void load_cells(const ConservedState& U) const;  // desingularised velocities into field_
   int clamp_round_off(ConservedState& U, double weight, std::span<const int> cells);
@@ -241,6 +250,11 @@ class FiniteVolumeSolver {
   std::vector<int> raw_levels_;             // what the Courant steps allowed, as last built
   std::vector<char> levels_dry_;            // dry_ as last built
   int full_version_ = 0, capped_from_ = -1;
+  int levels_built_ = 0;    // counts the builds of full_ and capped_levels_
+  TimeLevels rank_levels_;  // over ranks: this rank's share of *levels_
+  const TimeLevels* rank_levels_for_ = nullptr;
+  int rank_levels_built_ = -1;        // levels_built_ when rank_levels_ was taken
+  std::vector<double> level_inputs_;  // over ranks: each cell's raw level and dryness
   std::vector<double> cell_step_, step_start_, feed_;
   std::vector<double> level_step_;  // [s] 2^m dt0 per level m, this cycle
   std::vector<char> dry_;           // per cell, at the cycle's start

@@ -15,6 +15,14 @@
 // lake at rest stays at rest as in the one-step scheme, and with one level this is that scheme.
 // Every loop writes each cell or each (cell, edge) from one place and the balance is summed in
 // a fixed order, so the result does not depend on the number of threads.
+//
+// Over MPI ranks (rank_split.hpp) each rank advances its own cells: it evaluates the edges beside
+// them (rank_share), after each tick's starts and ends refreshes the two rings around them (the
+// states, rates and steps' starts that a neighbour's prediction reads), and at a cycle's start
+// where a cell's level or dryness changed gathers every cell's, so that every rank builds the
+// same levels. The
+// sums of the balance run over the whole mesh's lists in their order, on every rank alike: the
+// result is the same bit for bit on any number of ranks.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -25,14 +33,6 @@
 #include "flow/fv/fv_solver.hpp"
 
 namespace flotsam {
-
-namespace {
-// A level rises at most once every two cells away from a finer one. With one cell, four levels
-// let Stoker's shock, running from fine cells into the coarser still water, overshoot: the
-// envelope's largest depth +2.08 % against +1.32 % with one level (tolerance 2 %); with two
-// cells and three levels +1.32 %, as with one level (fv_flood_envelope_stoker.cpp).
-constexpr int cells_per_level = 2;
-}  // namespace
 
 // The cells that take one level: each discharge boundary's cells (Q is shared along the group
 // by the edges' depths, all at one time), and all the sources' cells (their depths are filled
@@ -55,30 +55,68 @@ std::vector<std::vector<int>> FiniteVolumeSolver::tied_cells() const {
   return ties;
 }
 
-// The cycle's levels for the smallest step dt0 [s] (cell_step_ and dry_ filled): each cell's
-// largest level its Courant step allows, keeping its last one while that is still allowed and
-// at most one below (the levels and their parts of L are built again only when one changes).
+// The cycle's levels for the smallest step dt0 [s] (cell_step_ and dry_ filled on this rank's
+// cells): each cell's largest level its Courant step allows, keeping its last one while that is
+// still allowed and at most one below (the levels and their parts of L are built again only when
+// one changes; over ranks, each cell's level and dryness then come from its owner).
 void FiniteVolumeSolver::choose_levels(double dt0, int cap) {
   const int n = cells_.cell_count;
-  std::vector<int> raw(n);
+  const RankSplit* split = part();
+  const std::span<const int> mine = split ? split->own() : std::span<const int>(all_cells_);
   const bool before = static_cast<int>(raw_levels_.size()) == n;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
+  std::vector<int> raw = before ? raw_levels_ : std::vector<int>(n, 0);
+  bool changed = !before;
+  const auto count = static_cast<std::ptrdiff_t>(mine.size());
+#pragma omp parallel for schedule(static) reduction(|| : changed)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const int i = mine[k];
     const double ratio = cell_step_[i] / dt0;  // >= 1
     int m = ratio >= std::ldexp(1.0, cap)
                 ? cap
                 : std::max(0, static_cast<int>(std::floor(std::log2(ratio))));
     if (before && raw_levels_[i] <= m && raw_levels_[i] >= m - 1) m = raw_levels_[i];
     raw[i] = m;
+    changed = changed || (before && (m != raw_levels_[i] || dry_[i] != levels_dry_[i]));
   }
-  if (!before || raw != raw_levels_ || dry_ != levels_dry_) {
+  if (split && (changed = split->any(changed))) {  // 2 m + dry, exact in a double
+    level_inputs_.resize(static_cast<std::size_t>(n));
+    for (const int i : mine) level_inputs_[i] = 2.0 * raw[i] + dry_[i];
+    split->gather(level_inputs_.data(), 1);
+    for (int i = 0; i < n; ++i) {
+      const int packed = static_cast<int>(level_inputs_[i]);
+      raw[i] = packed / 2;
+      dry_[i] = static_cast<char>(packed % 2);
+    }
+  }
+  if (changed) {
     raw_levels_ = raw;
     levels_dry_ = dry_;
     full_levels_ = build_time_levels(
         cells_, cell_levels(cells_, std::move(raw), cap, level_ties_, dry_, cells_per_level));
     ++full_version_;
+    ++levels_built_;
   }
   levels_ = &full_levels_;
+}
+
+const TimeLevels& FiniteVolumeSolver::my_levels() {
+  const RankSplit* split = part();
+  if (!split) return *levels_;
+  if (rank_levels_for_ != levels_ || rank_levels_built_ != levels_built_) {
+    rank_levels_ = rank_share(*levels_, *split);
+    rank_levels_for_ = levels_;
+    rank_levels_built_ = levels_built_;
+  }
+  return rank_levels_;
+}
+
+// Over ranks: the rings around this rank's cells from their owners, after cells started
+// (rates, feeds, steps' starts) or ended (`with_state`: their states too) a step.
+void FiniteVolumeSolver::exchange_steps(bool with_state) {
+  if (!part()) return;
+  double* steps[] = {rate_h_.data(),     rate_hu_.data(), rate_hv_.data(), feed_.data(),
+                     step_start_.data(), U1_.h.data(),    U1_.hu.data(),   U1_.hv.data()};
+  split_->exchange(std::span<double* const>(steps, with_state ? 8 : 5));
 }
 
 void FiniteVolumeSolver::advance_local(double dt) {
@@ -99,8 +137,12 @@ void FiniteVolumeSolver::advance_local(double dt) {
     evaluate_fluxes(U_, t);
     const double courant = case_.flow.fv.courant;
     double dt_courant = std::numeric_limits<double>::infinity();
+    const RankSplit* split = part();
+    const std::span<const int> mine = split ? split->own() : std::span<const int>(all_cells_);
+    const auto count = static_cast<std::ptrdiff_t>(mine.size());
 #pragma omp parallel for schedule(static) reduction(min : dt_courant)
-    for (int i = 0; i < n; ++i) {
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const int i = mine[k];
       dry_[i] = U_.h[i] <= dry_depth_;
       double speed = 0.0;
       for (int e : cells_.cell_edges[i]) speed = std::max(speed, edge_speed_[e]);
@@ -109,6 +151,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
       dt_courant = std::min(dt_courant, step);
       cell_step_[i] = shrink * step;
     }
+    if (split) dt_courant = split->min(dt_courant);
     double dt0 = std::min(shrink * dt_courant, left);
     choose_levels(dt0, cap);
     if (std::ldexp(dt0, levels_->top) > left) {  // the last cycle ends at t_end
@@ -119,6 +162,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
           for (int& m : capped) m = std::min(m, top);  // still smooth, tied, ahead of fronts
           capped_levels_ = build_time_levels(cells_, std::move(capped));
           capped_from_ = full_version_;
+          ++levels_built_;
         }
         levels_ = &capped_levels_;
       }
@@ -147,6 +191,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
     if (sub_step_observer_) sub_step_observer_(U_.time, cycle);
   }
   U_.time = t_end;
+  gather_step();
   balance_.volume = volume();
 }
 
@@ -155,6 +200,8 @@ void FiniteVolumeSolver::advance_local(double dt) {
 // retried), or -1.
 int FiniteVolumeSolver::local_cycle(double t0, double dt0) {
   const TimeLevels& lv = *levels_;
+  const TimeLevels& mine = my_levels();  // lv on one rank
+  const RankSplit* split = part();
   U1_ = U_;
   std::fill(step_start_.begin(), step_start_.end(), t0);
   level_step_.resize(lv.top + 1);
@@ -163,26 +210,28 @@ int FiniteVolumeSolver::local_cycle(double t0, double dt0) {
   for (int k = 0; k < ticks; ++k) {
     const int a = k == 0 ? lv.top : std::countr_zero(static_cast<unsigned>(k));
     const double t = t0 + k * dt0;
-    if (k > 0)
-      evaluate_part(lv.upto[a], t, {0, a}, true);  // the first stage of the cells starting
-    else                                           // the fluxes of U_ are evaluated
-      take_shares(all_edges_, cells_.boundary_edges, true);
-    start_steps(lv.cells_upto[a], t);
+    if (k > 0)  // the first stage of the cells starting
+      evaluate_part(mine.upto[a], lv.upto[a].boundary_edges, t, {0, a}, true);
+    else  // the fluxes of U_ are evaluated
+      take_shares(split ? split->edges() : all_edges_, cells_.boundary_edges, true);
+    start_steps(lv.cells_upto[a], mine.cells_upto[a], t);
+    exchange_steps(false);
     stats_.cell_updates += static_cast<double>(lv.cells_upto[a].size());
     for (int e = 0; e <= a; ++e) {  // the second stage of each level's edges
-      evaluate_part(lv.at[e], t + level_step_[e], {e, e}, false);
+      evaluate_part(mine.at[e], lv.at[e].boundary_edges, t + level_step_[e], {e, e}, false);
     }
     const int b = k + 1 == ticks ? lv.top : std::countr_zero(static_cast<unsigned>(k + 1));
-    const int bad = finish_steps(lv.cells_upto[b], t0 + (k + 1) * dt0);
+    const int bad = finish_steps(lv.cells_upto[b], mine.cells_upto[b], t0 + (k + 1) * dt0);
     if (bad >= 0) return bad;
+    exchange_steps(true);
   }
   return -1;
 }
 
 // L on `part` at time t: the cells' states on their predicted lines, the reconstruction, the
-// fluxes, and the edges' shares (take_shares).
-void FiniteVolumeSolver::evaluate_part(const EdgeSet& part, double t, LevelRange levels,
-                                       bool first_stage) {
+// fluxes, and the edges' shares (take_shares); `boundary_edges`: the whole part's, for the balance.
+void FiniteVolumeSolver::evaluate_part(const EdgeSet& part, std::span<const int> boundary_edges,
+                                       double t, LevelRange levels, bool first_stage) {
   const auto loaded = static_cast<std::ptrdiff_t>(part.loaded.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t k = 0; k < loaded; ++k) {
@@ -192,15 +241,17 @@ void FiniteVolumeSolver::evaluate_part(const EdgeSet& part, double t, LevelRange
     load_cell(i, h, U1_.hu[i] + s * rate_hu_[i], U1_.hv[i] + s * rate_hv_[i]);
   }
   reconstruct(cells_, case_.flow.fv.order, dry_depth_, field_, part.cells);
-  compute_edge_fluxes(part.edges, part.boundary_edges, t, levels);
-  take_shares(part.edges, part.boundary_edges, first_stage);
+  compute_edge_fluxes(part.edges, boundary_edges, t, levels);
+  take_shares(part.edges, boundary_edges, first_stage);
 }
 
-// Each evaluated edge's shares for its two cells (EdgeRate), times half its level's step, into
-// the cells' sums, and kept in side_* at a first stage (the rates of the cells starting); the
-// boundary's outflow into the balance, in the edges' order.
+// Each evaluated edge's shares for its cells (EdgeRate; over ranks, this rank's), times half its
+// level's step, into the cells' sums, and kept in side_* at a first stage (the rates of the cells
+// starting); the boundary's outflow into the balance, in the edges' order (over ranks, every
+// rank's edges: compute_edge_fluxes gathered their fluxes).
 void FiniteVolumeSolver::take_shares(std::span<const int> part_edges,
                                      std::span<const int> boundary_edges, bool first_stage) {
+  const RankSplit* split = part();
   const auto edges = static_cast<std::ptrdiff_t>(part_edges.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t k = 0; k < edges; ++k) {
@@ -208,7 +259,7 @@ void FiniteVolumeSolver::take_shares(std::span<const int> part_edges,
     const double w = 0.5 * level_step_[levels_->edge_level[e]];  // [s]
     for (const int side : {0, 1}) {
       const int i = side == 0 ? cells_.left[e] : cells_.right[e];
-      if (i < 0) continue;
+      if (i < 0 || (split && !split->owns(i))) continue;
       const int slot = side == 0 ? cells_.left_slot[e] : cells_.right_slot[e];
       const std::size_t j = 3 * static_cast<std::size_t>(i) + slot;
       const EdgeRate r = edge_rate(i, slot);
@@ -225,27 +276,28 @@ void FiniteVolumeSolver::take_shares(std::span<const int> part_edges,
   }
 }
 
-// The cells of `cells` start a step at t: their rate from the shares just evaluated (side_*),
-// and the rain and sources over their step.
-void FiniteVolumeSolver::start_steps(const std::vector<int>& cells, double t) {
+// The cells of `all` start a step at t: their rate from the shares just evaluated (side_*), and
+// the rain and sources over their step; this rank's of them, `mine` (all on one rank), are set.
+void FiniteVolumeSolver::start_steps(const std::vector<int>& all, const std::vector<int>& mine,
+                                     double t) {
   const int top = levels_->top;
   std::array<double, 8> rain{};  // [m] per level (time_levels <= 8), on a cell of weight 1
   const std::vector<double>& w = rain_.weights();
   if (rain_.raining()) {
     for (int m = 0; m <= top; ++m) rain[m] = rain_.depth(t, t + level_step_[m]);
     double rain_volume = 0.0;  // [m^3], in the cells' order
-    for (int i : cells) rain_volume += rain[levels_->cell_level[i]] * w[i] * cells_.area[i];
+    for (int i : all) rain_volume += rain[levels_->cell_level[i]] * w[i] * cells_.area[i];
     balance_.rain += rain_volume;
   }
   if (sources_.any()) {  // their cells share one level (tied_cells)
     const int m = levels_->cell_level[sources_.cells(0).front()];
-    if (std::binary_search(cells.begin(), cells.end(), sources_.cells(0).front()))
+    if (std::binary_search(all.begin(), all.end(), sources_.cells(0).front()))
       balance_.sources += sources_.depths(t, t + level_step_[m], source_depth_);
   }
-  const auto count = static_cast<std::ptrdiff_t>(cells.size());
+  const auto count = static_cast<std::ptrdiff_t>(mine.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const int i = cells[k];
+    const int i = mine[k];
     const std::size_t j = 3 * static_cast<std::size_t>(i);
     const double A = cells_.area[i], step = level_step_[levels_->cell_level[i]];
     rate_h_[i] = (side_h_[j] + side_h_[j + 1] + side_h_[j + 2]) / A;
@@ -259,10 +311,12 @@ void FiniteVolumeSolver::start_steps(const std::vector<int>& cells, double t) {
   }
 }
 
-// The cells of `cells` end their step at t_end: the update, the round-off below zero set to zero
-// (counted as a source), infiltration and friction over their step. Returns a cell that failed,
-// or -1.
-int FiniteVolumeSolver::finish_steps(const std::vector<int>& cells, double t_end) {
+// The cells of `all` end their step at t_end (this rank's of them, `mine`, updated): the update,
+// the round-off below zero set to zero (counted as a source), infiltration and friction over
+// their step. Returns a cell that failed, or -1 (over ranks, the same on every rank).
+int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vector<int>& mine,
+                                     double t_end) {
+  const std::vector<int>& cells = mine;
   const auto count = static_cast<std::ptrdiff_t>(cells.size());
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
@@ -284,8 +338,12 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& cells, double t_end
     step_start_[i] = t_end;
     suspect = suspect || !(U1_.h[i] >= 0.0) || !std::isfinite(U1_.hu[i] + U1_.hv[i]);
   }
+  if (const RankSplit* split = part()) {
+    suspect = split->any(suspect);
+    if (suspect) gather(U1_);  // every rank looks at every cell (clamp_round_off)
+  }
   if (suspect) {
-    const int bad = clamp_round_off(U1_, 1.0, cells);
+    const int bad = clamp_round_off(U1_, 1.0, all);
     if (bad >= 0) return bad;
   }
   if (rain_.infiltrating()) {

@@ -40,19 +40,23 @@ std::vector<int> grow(const CellMesh& c, std::vector<int> cells, int rings) {
 
 }  // namespace
 
-RankSplit::RankSplit(const CellMesh& cells, int rank, int size) : rank_(rank), size_(size) {
+RankSplit::RankSplit(const CellMesh& cells, int rank, int size, std::span<const int> weights,
+                     std::span<const char> gathered)
+    : rank_(rank), size_(size) {
   if (size < 1 || rank < 0 || rank >= size)
     throw std::invalid_argument("RankSplit: rank outside 0 .. size - 1");
 #if !FLOTSAM_MPI
   if (size > 1) throw std::invalid_argument("RankSplit: this build has no MPI");
 #endif
-  const std::vector<int> part = partition_cells(cells, size);
+  const std::vector<int> part = partition_cells(cells, size, weights);
   const auto P = static_cast<std::size_t>(size);
   own_of_.assign(P, {});
   for (int i = 0; i < cells.cell_count; ++i)
     own_of_[static_cast<std::size_t>(part[static_cast<std::size_t>(i)])].push_back(i);
   bedges_of_.assign(P, {});
   for (std::size_t k = 0; k < cells.boundary_edges.size(); ++k) {
+    if (!gathered.empty() && !gathered[k]) continue;
+    gathered_.push_back(static_cast<int>(k));
     const int owner = part[static_cast<std::size_t>(cells.left[cells.boundary_edges[k]])];
     bedges_of_[static_cast<std::size_t>(owner)].push_back(static_cast<int>(k));
   }

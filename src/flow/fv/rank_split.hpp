@@ -18,9 +18,12 @@ namespace flotsam {
 
 class RankSplit {
  public:
-  /// Rank `rank` of `size` (>= 1) over `cells`. MPI must be initialised when
-  /// size > 1 (std::invalid_argument when this build has no MPI).
-  RankSplit(const CellMesh& cells, int rank, int size);
+  /// Rank `rank` of `size` (>= 1) over `cells`, the parts balancing `weights` (partition.hpp);
+  /// `gathered` (one per edge of cells.boundary_edges; empty: all) marks the boundary edges whose
+  /// values gather_boundary carries. MPI must be initialised when size > 1
+  /// (std::invalid_argument when this build has no MPI).
+  RankSplit(const CellMesh& cells, int rank, int size, std::span<const int> weights = {},
+            std::span<const char> gathered = {});
 
   int rank() const { return rank_; }
   int size() const { return size_; }
@@ -28,8 +31,10 @@ class RankSplit {
   std::span<const int> reconstructed() const { return ring1_; }  ///< own + ring 1, ascending
   std::span<const int> loaded() const { return ring2_; }         ///< own + rings 1, 2, ascending
   std::span<const int> edges() const { return edges_; }          ///< beside an own cell
-  /// Positions in cells.boundary_edges of the edges of own cells, ascending.
+  /// Positions in cells.boundary_edges of the gathered edges of own cells, ascending.
   std::span<const int> boundary_positions() const { return bedges_; }
+  /// Positions in cells.boundary_edges of every rank's gathered edges, ascending.
+  std::span<const int> gathered_positions() const { return gathered_; }
   bool owns(int cell) const { return owned_[static_cast<std::size_t>(cell)] != 0; }
 
   /// Refreshes rings 1 and 2 of each per-cell array from their owners.
@@ -37,7 +42,7 @@ class RankSplit {
   /// Every cell of `data` (`per_cell` values each) from its owner, on every rank.
   void gather(double* data, int per_cell) const;
   /// `values` holds one value per edge of cells.boundary_edges (position k: the k-th), this
-  /// rank's own filled in; on return every rank's.
+  /// rank's own gathered ones filled in; on return every rank's.
   void gather_boundary(std::vector<double>& values) const;
   double min(double x) const;
   bool any(bool x) const;
@@ -50,7 +55,7 @@ class RankSplit {
   std::vector<double> all_of(const std::vector<double>& mine, const std::vector<int>& counts) const;
 
   int rank_, size_;
-  std::vector<int> own_, ring1_, ring2_, edges_, bedges_;
+  std::vector<int> own_, ring1_, ring2_, edges_, bedges_, gathered_;
   std::vector<char> owned_;                    // per cell
   std::vector<std::vector<int>> own_of_;       // per rank: its own cells, ascending
   std::vector<std::vector<int>> bedges_of_;    // per rank: positions in boundary_edges, ascending

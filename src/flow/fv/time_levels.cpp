@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <iterator>
 
 namespace flotsam {
 
@@ -101,6 +102,46 @@ TimeLevels build_time_levels(const CellMesh& c, std::vector<int> levels) {
       if (j >= 0) loaded |= touches[j];
     add_cell(t, i, loaded, &EdgeSet::loaded);
   }
+  return t;
+}
+
+std::vector<int> size_weights(const CellMesh& c, int time_levels) {
+  const int n = c.cell_count, cap = time_levels - 1;
+  if (n == 0) return {};
+  const double smallest = *std::min_element(c.length_scale.begin(), c.length_scale.end());
+  std::vector<int> raw(n);
+  for (int i = 0; i < n; ++i)
+    raw[i] = std::min(cap, static_cast<int>(std::floor(std::log2(c.length_scale[i] / smallest))));
+  const std::vector<int> level =
+      cell_levels(c, std::move(raw), cap, {}, std::vector<char>(n, 0), cells_per_level);
+  const int top = *std::max_element(level.begin(), level.end());
+  std::vector<int> weight(n);
+  for (int i = 0; i < n; ++i) weight[i] = 1 << (top - level[i]);
+  return weight;
+}
+
+TimeLevels rank_share(const TimeLevels& levels, const RankSplit& split) {
+  const auto in = [](std::span<const int> sorted) {
+    return [sorted](int i) { return std::binary_search(sorted.begin(), sorted.end(), i); };
+  };
+  const auto owned = [&split](int i) { return split.owns(i); };
+  const auto beside = in(split.edges());
+  const auto reconstructed = in(split.reconstructed());
+  const auto loaded = in(split.loaded());
+  const auto keep = [](const std::vector<int>& all, const auto& member) {
+    std::vector<int> kept;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(kept), member);
+    return kept;
+  };
+  const auto share = [&](const EdgeSet& s) {
+    return EdgeSet{keep(s.edges, beside), keep(s.boundary_edges, beside),
+                   keep(s.cells, reconstructed), keep(s.loaded, loaded)};
+  };
+  TimeLevels t;
+  t.top = levels.top;
+  for (const auto& cells : levels.cells_upto) t.cells_upto.push_back(keep(cells, owned));
+  for (const EdgeSet& s : levels.upto) t.upto.push_back(share(s));
+  for (const EdgeSet& s : levels.at) t.at.push_back(share(s));
   return t;
 }
 

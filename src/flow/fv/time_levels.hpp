@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "flow/fv/cell_mesh.hpp"
+#include "flow/fv/rank_split.hpp"
 
 namespace flotsam {
 
@@ -21,6 +22,12 @@ struct EdgeSet {
   std::vector<int> cells;
   std::vector<int> loaded;
 };
+
+/// A level rises at most once every two cells away from a finer one. With one cell, four levels
+/// let Stoker's shock, running from fine cells into the coarser still water, overshoot: the
+/// envelope's largest depth +2.08 % against +1.32 % with one level (tolerance 2 %); with two
+/// cells and three levels +1.32 %, as with one level (fv_flood_envelope_stoker.cpp).
+inline constexpr int cells_per_level = 2;
 
 struct TimeLevels {
   int top = 0;                  // the highest level of any cell
@@ -42,5 +49,15 @@ std::vector<int> cell_levels(const CellMesh& cells, std::vector<int> raw, int ca
 
 /// The edges' levels and the parts of L for the cells' `levels`.
 TimeLevels build_time_levels(const CellMesh& cells, std::vector<int> levels);
+
+/// Each cell's work per cycle of `time_levels` levels, 2^(top - m), at the level m its size alone
+/// gives it (one wave speed everywhere; smoothed as cell_levels does): the weights of the parts
+/// for MPI ranks, so that fine and coarse cells balance.
+std::vector<int> size_weights(const CellMesh& cells, int time_levels);
+
+/// One MPI rank's share of `levels` (rank_split.hpp): of each part, the edges beside the rank's
+/// own cells (and their boundary edges), the cells whose reconstruction those read, the cells
+/// loaded for it; of each cells_upto, the own cells. cell_level and edge_level stay `levels`'.
+TimeLevels rank_share(const TimeLevels& levels, const RankSplit& split);
 
 }  // namespace flotsam

@@ -77,5 +77,31 @@ TEST(RankSplit, MoreRanksThanCellsIsRefused) {
   EXPECT_THROW(RankSplit(c, 3, 3), std::invalid_argument);
 }
 
+// Only the marked boundary edges (those water may cross) are gathered: each by the rank owning
+// the cell inside it, every marked one by exactly one rank.
+TEST(RankSplit, GathersOnlyTheMarkedBoundaryEdges) {
+  const Mesh mesh = make_rectangle_mesh({.length = 40.0, .width = 10.0, .nx = 40, .ny = 10});
+  const CellMesh c = build_cell_mesh(mesh, FvCells::elements);
+  std::vector<char> marked(c.boundary_edges.size(), 0);
+  std::vector<int> expected;
+  for (std::size_t k = 0; k < marked.size(); k += 3) {
+    marked[k] = 1;
+    expected.push_back(static_cast<int>(k));
+  }
+  std::vector<int> counted(marked.size(), 0);
+  for (int rank = 0; rank < 3; ++rank) {
+    const RankSplit split(c, rank, 3, {}, marked);
+    EXPECT_EQ(
+        std::vector<int>(split.gathered_positions().begin(), split.gathered_positions().end()),
+        expected);
+    for (const int k : split.boundary_positions()) {
+      EXPECT_EQ(marked[static_cast<std::size_t>(k)], 1);
+      EXPECT_TRUE(split.owns(c.left[c.boundary_edges[static_cast<std::size_t>(k)]]));
+      ++counted[static_cast<std::size_t>(k)];
+    }
+  }
+  for (std::size_t k = 0; k < marked.size(); ++k) EXPECT_EQ(counted[k], marked[k]) << k;
+}
+
 }  // namespace
 }  // namespace flotsam

@@ -1,13 +1,19 @@
 // Tests the local time stepping's levels (flow/fv/time_levels.hpp) on a strip of 40 x 1
 // rectangles (80 triangles) whose neighbours are known: levels fall by at most one per cell
 // towards the finest, ties and the rings ahead of a shoreline lower them, and the parts of L
-// hold exactly the edges and cells of their levels.
+// hold exactly the edges and cells of their levels; over MPI ranks each rank's share of a part
+// holds the part's edges beside its cells and all they read; the parts' weights are each cell's
+// updates per cycle.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <queue>
 
+#include <cmath>
+#include <set>
+
 #include "flow/fv/cell_mesh.hpp"
+#include "flow/fv/rank_split.hpp"
 #include "flow/fv/time_levels.hpp"
 #include "mesh/structured_mesh.hpp"
 
@@ -100,6 +106,69 @@ TEST(TimeLevels, AWidthOfTwoRaisesALevelEveryTwoCells) {
   const std::vector<int> level = levels_around_the_fine_cell(2);
   const std::vector<int> d = distances(c, fine);
   for (int i = 0; i < c.cell_count; ++i) EXPECT_EQ(level[i], std::min(cap, d[i] / 2)) << i;
+}
+
+// Over 3 ranks: the shares of every part together hold its edges, each edge in the share of
+// every rank owning one of its cells and only there; each share holds the cells its edges'
+// fluxes read and their neighbours, within what the rank loads; cells_upto is split by owner.
+TEST(TimeLevels, EachRankSharesThePartsBesideItsCells) {
+  const CellMesh& c = strip();
+  const TimeLevels t = build_time_levels(c, levels_around_the_fine_cell(2));
+  ASSERT_EQ(t.top, cap);
+  constexpr int ranks = 3;
+  std::vector<RankSplit> splits;
+  std::vector<TimeLevels> shares;
+  for (int r = 0; r < ranks; ++r) {
+    splits.emplace_back(c, r, ranks);
+    shares.push_back(rank_share(t, splits.back()));
+  }
+  const auto check = [&](const EdgeSet& whole, const EdgeSet& share, const RankSplit& split) {
+    for (const int e : whole.edges) {
+      const bool beside = split.owns(c.left[e]) || (c.right[e] >= 0 && split.owns(c.right[e]));
+      EXPECT_EQ(std::binary_search(share.edges.begin(), share.edges.end(), e), beside) << e;
+    }
+    for (const int e : share.edges)
+      for (const int i : {c.left[e], c.right[e]}) {
+        if (i < 0) continue;
+        EXPECT_TRUE(std::binary_search(share.cells.begin(), share.cells.end(), i));
+        for (const int j : c.neighbour[i]) {
+          if (j >= 0) {
+            EXPECT_TRUE(std::binary_search(share.loaded.begin(), share.loaded.end(), j));
+          }
+        }
+      }
+    for (const int i : share.loaded)
+      EXPECT_TRUE(std::binary_search(split.loaded().begin(), split.loaded().end(), i));
+    for (const int e : share.boundary_edges) EXPECT_LT(c.right[e], 0);
+  };
+  for (int a = 0; a <= t.top; ++a) {
+    std::set<int> edges, cells;
+    for (int r = 0; r < ranks; ++r) {
+      check(t.upto[a], shares[r].upto[a], splits[r]);
+      check(t.at[a], shares[r].at[a], splits[r]);
+      edges.insert(shares[r].upto[a].edges.begin(), shares[r].upto[a].edges.end());
+      for (const int i : shares[r].cells_upto[a]) {
+        EXPECT_TRUE(splits[r].owns(i));
+        EXPECT_TRUE(cells.insert(i).second) << "cell " << i << " shared twice";
+      }
+    }
+    EXPECT_EQ(edges, std::set<int>(t.upto[a].edges.begin(), t.upto[a].edges.end()));
+    EXPECT_EQ(cells, std::set<int>(t.cells_upto[a].begin(), t.cells_upto[a].end()));
+  }
+}
+
+// Cells whose sizes double at each edge crossed away from cell `fine`: the level its size gives
+// a cell is its distance (capped), smoothed to one level every two cells; its weight the
+// updates it takes per cycle, 2^(top - level) (exact).
+TEST(TimeLevels, SizeWeightsAreEachCellsUpdatesPerCycle) {
+  CellMesh c = strip();
+  const std::vector<int> d = distances(c, fine);
+  for (int i = 0; i < c.cell_count; ++i) c.length_scale[i] = 0.25 * std::ldexp(1.0, d[i]);
+  const std::vector<int> w = size_weights(c, cap + 1);
+  ASSERT_EQ(static_cast<int>(w.size()), c.cell_count);
+  for (int i = 0; i < c.cell_count; ++i) EXPECT_EQ(w[i], 1 << (cap - std::min(cap, d[i] / 2))) << i;
+  const std::vector<int> uniform = size_weights(strip(), cap + 1);
+  EXPECT_TRUE(std::all_of(uniform.begin(), uniform.end(), [](int x) { return x == 1; }));
 }
 
 }  // namespace
