@@ -20,9 +20,8 @@
 // them (rank_share), after each tick's starts and ends refreshes the two rings around them (the
 // states, rates and steps' starts that a neighbour's prediction reads), and at a cycle's start
 // where a cell's level or dryness changed gathers every cell's, so that every rank builds the
-// same levels. The
-// sums of the balance run over the whole mesh's lists in their order, on every rank alike: the
-// result is the same bit for bit on any number of ranks.
+// same levels. The sums of the balance run over the whole mesh's lists in their order, on every
+// rank alike: the result is the same bit for bit on any number of ranks.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -91,10 +90,13 @@ void FiniteVolumeSolver::choose_levels(double dt0, int cap) {
   if (changed) {
     raw_levels_ = raw;
     levels_dry_ = dry_;
-    full_levels_ = build_time_levels(
-        cells_, cell_levels(cells_, std::move(raw), cap, level_ties_, dry_, cells_per_level));
-    ++full_version_;
-    ++levels_built_;
+    std::vector<int> level =
+        cell_levels(cells_, std::move(raw), cap, level_ties_, dry_, cells_per_level);
+    if (level != full_levels_.cell_level) {  // mostly they are the same (a front moved a cell)
+      full_levels_ = build_time_levels(cells_, std::move(level));
+      ++full_version_;
+      ++levels_built_;
+    }
   }
   levels_ = &full_levels_;
 }
@@ -103,7 +105,7 @@ const TimeLevels& FiniteVolumeSolver::my_levels() {
   const RankSplit* split = part();
   if (!split) return *levels_;
   if (rank_levels_for_ != levels_ || rank_levels_built_ != levels_built_) {
-    rank_levels_ = rank_share(*levels_, *split);
+    rank_levels_ = rank_share(cells_, *levels_, *split);
     rank_levels_for_ = levels_;
     rank_levels_built_ = levels_built_;
   }
@@ -316,7 +318,7 @@ void FiniteVolumeSolver::start_steps(const std::vector<int>& all, const std::vec
 // their step. Returns a cell that failed, or -1 (over ranks, the same on every rank).
 int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vector<int>& mine,
                                      double t_end) {
-  const std::vector<int>& cells = mine;
+  const std::vector<int>& cells = mine;  // the cells this rank updates
   const auto count = static_cast<std::ptrdiff_t>(cells.size());
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)

@@ -64,10 +64,11 @@ RankSplit::RankSplit(const CellMesh& cells, int rank, int size, std::span<const 
     if (own_of_[q].empty())
       throw std::invalid_argument("RankSplit: more ranks than the mesh can give each a part");
   own_ = own_of_[static_cast<std::size_t>(rank)];
-  owned_.assign(static_cast<std::size_t>(cells.cell_count), 0);
-  for (const int i : own_) owned_[static_cast<std::size_t>(i)] = 1;
   ring1_ = grow(cells, own_, 1);
   ring2_ = grow(cells, ring1_, 1);
+  ring_.assign(static_cast<std::size_t>(cells.cell_count), 3);
+  for (const auto& [cells_in, r] : {std::pair{&ring2_, 2}, {&ring1_, 1}, {&own_, 0}})
+    for (const int i : *cells_in) ring_[static_cast<std::size_t>(i)] = static_cast<char>(r);
   for (const int i : own_)
     for (const int e : cells.cell_edges[static_cast<std::size_t>(i)]) edges_.push_back(e);
   sort_unique(edges_);

@@ -35,7 +35,9 @@ class RankSplit {
   std::span<const int> boundary_positions() const { return bedges_; }
   /// Positions in cells.boundary_edges of every rank's gathered edges, ascending.
   std::span<const int> gathered_positions() const { return gathered_; }
-  bool owns(int cell) const { return owned_[static_cast<std::size_t>(cell)] != 0; }
+  bool owns(int cell) const { return ring(cell) == 0; }
+  /// 0 for an own cell, 1 or 2 for a cell of the first or second ring around them, 3 beyond.
+  int ring(int cell) const { return ring_[static_cast<std::size_t>(cell)]; }
 
   /// Refreshes rings 1 and 2 of each per-cell array from their owners.
   void exchange(std::span<double* const> arrays) const;
@@ -56,7 +58,7 @@ class RankSplit {
 
   int rank_, size_;
   std::vector<int> own_, ring1_, ring2_, edges_, bedges_, gathered_;
-  std::vector<char> owned_;                    // per cell
+  std::vector<char> ring_;                     // per cell: 0 own, 1, 2 its rings, 3 beyond
   std::vector<std::vector<int>> own_of_;       // per rank: its own cells, ascending
   std::vector<std::vector<int>> bedges_of_;    // per rank: positions in boundary_edges, ascending
   std::vector<int> peers_;                     // ranks this one exchanges with

@@ -120,14 +120,13 @@ std::vector<int> size_weights(const CellMesh& c, int time_levels) {
   return weight;
 }
 
-TimeLevels rank_share(const TimeLevels& levels, const RankSplit& split) {
-  const auto in = [](std::span<const int> sorted) {
-    return [sorted](int i) { return std::binary_search(sorted.begin(), sorted.end(), i); };
+TimeLevels rank_share(const CellMesh& c, const TimeLevels& levels, const RankSplit& split) {
+  const auto owned = [&split](int i) { return split.ring(i) == 0; };
+  const auto reconstructed = [&split](int i) { return split.ring(i) <= 1; };
+  const auto loaded = [&split](int i) { return split.ring(i) <= 2; };
+  const auto beside = [&](int e) {
+    return owned(c.left[e]) || (c.right[e] >= 0 && owned(c.right[e]));
   };
-  const auto owned = [&split](int i) { return split.owns(i); };
-  const auto beside = in(split.edges());
-  const auto reconstructed = in(split.reconstructed());
-  const auto loaded = in(split.loaded());
   const auto keep = [](const std::vector<int>& all, const auto& member) {
     std::vector<int> kept;
     std::copy_if(all.begin(), all.end(), std::back_inserter(kept), member);

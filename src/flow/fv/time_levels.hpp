@@ -58,6 +58,6 @@ std::vector<int> size_weights(const CellMesh& cells, int time_levels);
 /// One MPI rank's share of `levels` (rank_split.hpp): of each part, the edges beside the rank's
 /// own cells (and their boundary edges), the cells whose reconstruction those read, the cells
 /// loaded for it; of each cells_upto, the own cells. cell_level and edge_level stay `levels`'.
-TimeLevels rank_share(const TimeLevels& levels, const RankSplit& split);
+TimeLevels rank_share(const CellMesh& cells, const TimeLevels& levels, const RankSplit& split);
 
 }  // namespace flotsam

@@ -120,7 +120,7 @@ TEST(TimeLevels, EachRankSharesThePartsBesideItsCells) {
   std::vector<TimeLevels> shares;
   for (int r = 0; r < ranks; ++r) {
     splits.emplace_back(c, r, ranks);
-    shares.push_back(rank_share(t, splits.back()));
+    shares.push_back(rank_share(c, t, splits.back()));
   }
   const auto check = [&](const EdgeSet& whole, const EdgeSet& share, const RankSplit& split) {
     for (const int e : whole.edges) {
