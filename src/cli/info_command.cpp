@@ -15,6 +15,7 @@
 #include "flow/fv/partition.hpp"
 #include "flow/fv/time_levels.hpp"
 #include "io/case_file.hpp"
+#include "io/vtu_writer.hpp"
 #include "mesh/mesh_generator.hpp"
 #include "mesh/mesh_summary.hpp"
 #include "mesh/msh_reader.hpp"
@@ -48,34 +49,53 @@ std::string format_partition(const PartitionSummary& s, int parts) {
 }  // namespace
 
 void add_info_command(CLI::App& app) {
-  auto path = std::make_shared<std::string>();
-  auto parts = std::make_shared<int>(0);
+  struct Options {
+    std::string path, parts_vtu;
+    int parts = 0;
+    bool overwrite = false;
+  };
+  auto options = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "info",
       "Print what a mesh holds: nodes, elements, boundary groups with their lengths, element\n"
       "sizes and quality. FILE is a Gmsh .msh file, or a case file whose mesh is generated.\n"
       "Example: flotsam info out/bridge.msh");
-  cmd->add_option("file", *path, "mesh (.msh) or case file (.yaml)")
+  cmd->add_option("file", options->path, "mesh (.msh) or case file (.yaml)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--parts", *parts,
-                  "also split the finite-volume cells into N parts, as N MPI ranks would take\n"
-                  "them, and print their cells, halos and neighbours")
-      ->check(CLI::Range(1, 1 << 20));
-  cmd->callback([path, parts] {
+  CLI::Option* parts_option =
+      cmd->add_option("--parts", options->parts,
+                      "also split the finite-volume cells into N parts, as N MPI ranks would take\n"
+                      "them, and print their cells, halos and neighbours")
+          ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--parts-vtu", options->parts_vtu,
+                  "with --parts: also write the cells with their part (0 .. N-1, cell data\n"
+                  "'part') for ParaView (.vtu)")
+      ->needs(parts_option);
+  cmd->add_flag("--overwrite", options->overwrite, "replace the --parts-vtu file if it exists");
+  cmd->callback([options] {
+    if (!options->parts_vtu.empty()) check_can_write(options->parts_vtu, options->overwrite);
     // The case's mesh and cells, or a .msh file's with the default cells.
     const std::optional<Case> c =
-        is_case_file(*path) ? std::optional<Case>(read_case(*path)) : std::nullopt;
-    const Mesh mesh = c ? generate_mesh(c->mesh) : read_msh(*path);
+        is_case_file(options->path) ? std::optional<Case>(read_case(options->path)) : std::nullopt;
+    const Mesh mesh = c ? generate_mesh(c->mesh) : read_msh(options->path);
     std::string text = format_mesh_summary(summarize_mesh(mesh));
-    if (*parts > 0) {
+    if (const int parts = options->parts; parts > 0) {
       const CellMesh cells =
           build_cell_mesh(mesh, c ? c->flow.fv.cells : FiniteVolumeConfig{}.cells);
       const int levels = c ? c->flow.fv.time_levels : 1;  // fine cells weigh their updates
       const std::vector<int> weights =
           levels > 1 ? size_weights(cells, levels) : std::vector<int>{};
-      const std::vector<int> part = partition_cells(cells, *parts, weights);
-      text += format_partition(summarize_partition(cells, part, *parts, weights), *parts);
+      const std::vector<int> part = partition_cells(cells, parts, weights);
+      text += format_partition(summarize_partition(cells, part, parts, weights), parts);
+      if (!options->parts_vtu.empty()) {
+        const std::vector<double> value(part.begin(), part.end());
+        VtuFields fields;
+        fields.add_cell_scalar("part", value);
+        write_vtu(options->parts_vtu, mesh, fields, 0.0,
+                  cells.kind == FvCells::split ? VtuCells::split : VtuCells::quadratic);
+        text += fmt::format("  written to     {}\n", options->parts_vtu);
+      }
     }
     print_result(text);
   });

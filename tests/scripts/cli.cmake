@@ -25,6 +25,14 @@ flotsam_cli_test(info_parts 0
                  "parts +4 .METIS.*\n  cells +[0-9]+ / [0-9]+ / [0-9]+\n  halo cells +[0-9]+ / [0-9]+ / [0-9]+ .*\n  neighbours +[1-3] / [0-9]+ / [1-3] .*\n  cut edges +[0-9]+; imbalance 1.0[0-3]"
                  info bridge.msh --parts 4)
 set_tests_properties(cli.info_parts PROPERTIES FIXTURES_REQUIRED cli_mesh)
+# The same parts written for ParaView (--parts-vtu): VTK reads a cell array 'part' of 0 .. 3
+# whose smallest and largest part are the report's (check_parts_vtu.py).
+add_test(NAME cli.info_parts_vtu
+         COMMAND bash -c "\"$0\" info bridge.msh --parts 4 --parts-vtu parts.vtu --overwrite > parts.txt && \"$1\" \"$2\" parts.vtu 4 parts.txt"
+                 $<TARGET_FILE:flotsam> ${FLOTSAM_VTK_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_parts_vtu.py
+         WORKING_DIRECTORY ${cli_work})
+set_tests_properties(cli.info_parts_vtu PROPERTIES LABELS "cli" FIXTURES_REQUIRED cli_mesh
+                     ENVIRONMENT "${test_environment}")
 flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --overwrite"
                  mesh ${examples}/bridge_piers.yaml -o bridge.msh)
 set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)
