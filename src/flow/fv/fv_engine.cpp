@@ -287,9 +287,10 @@ std::string FvEngine::ranks_summary() const {
   if (!split) return "";
   return fmt::format(
       "MPI ranks        {}: rank {} advanced {} cells and read {} around them; {:.3g} s in "
-      "communication, {:.3g} MB sent\n",
+      "communication ({:.2g} % of the run since the split), {:.3g} MB sent\n",
       split->size(), split->rank(), split->own().size(),
       split->loaded().size() - split->own().size(), split->communication_seconds(),
+      100.0 * split->communication_seconds() / std::max(1e-9, split->seconds_since_split()),
       split->bytes_sent() / 1e6);
 }
 

@@ -42,7 +42,7 @@ std::vector<int> grow(const CellMesh& c, std::vector<int> cells, int rings) {
 
 RankSplit::RankSplit(const CellMesh& cells, int rank, int size, std::span<const int> weights,
                      std::span<const char> gathered)
-    : rank_(rank), size_(size) {
+    : rank_(rank), size_(size), made_(omp_get_wtime()) {
   if (size < 1 || rank < 0 || rank >= size)
     throw std::invalid_argument("RankSplit: rank outside 0 .. size - 1");
 #if !FLOTSAM_MPI
@@ -90,6 +90,10 @@ RankSplit::RankSplit(const CellMesh& cells, int rank, int size, std::span<const 
   for (int q = 0; q < size; ++q)
     if (!send_[static_cast<std::size_t>(q)].empty() || !recv_[static_cast<std::size_t>(q)].empty())
       peers_.push_back(q);
+}
+
+double RankSplit::seconds_since_split() const {
+  return omp_get_wtime() - made_;
 }
 
 #if FLOTSAM_MPI

@@ -51,6 +51,8 @@ class RankSplit {
 
   /// Wall time spent in communication so far [s], and bytes this rank sent.
   double communication_seconds() const { return seconds_; }
+  /// Wall time since this split was made [s].
+  double seconds_since_split() const;
   double bytes_sent() const { return bytes_; }
 
  private:
@@ -64,6 +66,7 @@ class RankSplit {
   std::vector<int> peers_;                     // ranks this one exchanges with
   std::vector<std::vector<int>> send_, recv_;  // per peer: cells sent (own), received (halo)
   mutable double seconds_ = 0.0, bytes_ = 0.0;
+  double made_;  // [s] omp_get_wtime() when made
 };
 
 }  // namespace flotsam
