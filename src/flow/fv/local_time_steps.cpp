@@ -318,12 +318,11 @@ void FiniteVolumeSolver::start_steps(const std::vector<int>& all, const std::vec
 // their step. Returns a cell that failed, or -1 (over ranks, the same on every rank).
 int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vector<int>& mine,
                                      double t_end) {
-  const std::vector<int>& cells = mine;  // the cells this rank updates
-  const auto count = static_cast<std::ptrdiff_t>(cells.size());
+  const auto count = static_cast<std::ptrdiff_t>(mine.size());
   bool suspect = false;
 #pragma omp parallel for schedule(static) reduction(|| : suspect)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const int i = cells[k];
+    const int i = mine[k];
     const std::size_t j = 3 * static_cast<std::size_t>(i);
     const double A = cells_.area[i], step = level_step_[levels_->cell_level[i]];
     const double h = U1_.h[i], hu = U1_.hu[i], hv = U1_.hv[i];
@@ -350,7 +349,7 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vec
   }
   if (rain_.infiltrating()) {
     const double f = rain_.infiltration_rate();
-    for (int i : cells)  // in the cells' order: the balance's sum
+    for (int i : mine)  // in the cells' order (all: refused over ranks): the balance's sum
       balance_.infiltration +=
           cells_.area[i] * RainSource::infiltrate_cell(U1_.h[i], U1_.hu[i], U1_.hv[i],
                                                        f * level_step_[levels_->cell_level[i]]);
@@ -358,17 +357,17 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vec
   if (friction_.law != FrictionLaw::none) {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t k = 0; k < count; ++k)
-      apply_friction(U1_, cells[k], level_step_[levels_->cell_level[cells[k]]]);
+      apply_friction(U1_, mine[k], level_step_[levels_->cell_level[mine[k]]]);
   }
   if (!pier_drag_.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t k = 0; k < count; ++k)
-      apply_pier_drag(U1_, cells[k], level_step_[levels_->cell_level[cells[k]]]);
+      apply_pier_drag(U1_, mine[k], level_step_[levels_->cell_level[mine[k]]]);
   }
   if (!body_drag_.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t k = 0; k < count; ++k)
-      body_drag_.apply(U1_, cells[k], level_step_[levels_->cell_level[cells[k]]], dry_depth_);
+      body_drag_.apply(U1_, mine[k], level_step_[levels_->cell_level[mine[k]]], dry_depth_);
   }
   return -1;
 }
