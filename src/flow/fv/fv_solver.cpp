@@ -492,9 +492,18 @@ void FiniteVolumeSolver::apply_pier_drag(ConservedState& U, int i, double dt) {
 }
 
 // (M-17) infiltration after the stages: each cell loses min(h, f dt), counted in the balance.
+// Over ranks each rank infiltrates its own cells and the depths lost go to every rank, so that
+// the volume is summed in the cells' order as on one.
 void FiniteVolumeSolver::apply_infiltration(ConservedState& U, double dt) {
   if (!rain_.infiltrating()) return;
-  balance_.infiltration += rain_.infiltrate(U.h, U.hu, U.hv, dt);
+  const RankSplit* split = part();
+  if (!split) {
+    balance_.infiltration += rain_.infiltrate(U.h, U.hu, U.hv, dt);
+    return;
+  }
+  balance_.infiltration +=
+      rain_.infiltrate(U.h, U.hu, U.hv, dt, split->own(),
+                       [split](std::vector<double>& lost) { split->gather(lost.data(), 1); });
 }
 
 // ---- stepping -----------------------------------------------------------------------------
@@ -626,11 +635,11 @@ void FiniteVolumeSolver::gather_step() {
 
 void FiniteVolumeSolver::set_rank_split(std::shared_ptr<const RankSplit> split) {
   const std::string file = case_.file.empty() ? "case" : case_.file;
-  if (split && split->size() > 1 && rain_.infiltrating())
+  if (split && split->size() > 1 && rain_.infiltrating() && case_.flow.fv.time_levels > 1)
     throw_input_error(
-        "{}: flow.rain infiltration is not supported on several MPI ranks yet (issue 41); run it "
-        "on one rank",
-        file);
+        "{}: flow.rain infiltration with flow.fv.time_levels: {} is not supported on several MPI "
+        "ranks yet (issue 41); run it with time_levels: 1, or on one rank",
+        file, case_.flow.fv.time_levels);
   split_ = split && split->size() > 1 ? std::move(split) : nullptr;
 }
 

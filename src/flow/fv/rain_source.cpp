@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 
 #include "core/constants.hpp"
@@ -78,12 +79,23 @@ double RainSource::depth(double t0, double t1) const {
 // (M-17) infiltration: h_i -> h_i - min(h_i, f dt). A cell keeps its velocity (the water that
 // soaks away takes its own momentum with it), so hu and hv scale as h; emptied, it is at rest.
 double RainSource::infiltrate(std::vector<double>& h, std::vector<double>& hu,
-                              std::vector<double>& hv, double dt) {
+                              std::vector<double>& hv, double dt, std::span<const int> cells,
+                              const std::function<void(std::vector<double>&)>& share) {
   const double loss = f_ * dt;  // [m]
   const int n = static_cast<int>(h.size());
   infiltrated_.resize(n);
+  if (cells.empty()) {
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) infiltrated_[i] = infiltrate_cell(h[i], hu[i], hv[i], loss);
+    for (int i = 0; i < n; ++i) infiltrated_[i] = infiltrate_cell(h[i], hu[i], hv[i], loss);
+  } else {
+    const auto count = static_cast<std::ptrdiff_t>(cells.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const int i = cells[k];
+      infiltrated_[i] = infiltrate_cell(h[i], hu[i], hv[i], loss);
+    }
+  }
+  if (share) share(infiltrated_);
   double volume = 0.0;  // [m^3]
   for (int i = 0; i < n; ++i) volume += area_[i] * infiltrated_[i];
   return volume;

@@ -8,6 +8,8 @@
 // weight per cell (the case's rain raster's pixel under the cell's centroid, else 1; or set) and
 // f the constant infiltration. The solver adds the rain inside its Runge-Kutta stages and takes
 // the infiltration after them (fv_solver.cpp).
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "core/time_series.hpp"
@@ -53,11 +55,14 @@ class RainSource {
   /// f [m/s].
   double infiltration_rate() const { return f_; }
 
-  /// Infiltration over dt [s] (M-17): each cell loses min(h_i, f dt), the water leaving with the
-  /// cell's velocity (hu, hv scaled with h; a cell emptied is at rest). Returns the volume
-  /// infiltrated [m^3], summed in cell order (the same on any number of threads).
+  /// Infiltration over dt [s] (M-17): each cell of `cells` (every cell when empty) loses
+  /// min(h_i, f dt), the water leaving with the cell's velocity (hu, hv scaled with h; a cell
+  /// emptied is at rest). `share`, when given, fills in the depth each other cell lost (over MPI
+  /// ranks: from its owner). Returns the volume infiltrated [m^3], summed over every cell in cell
+  /// order (the same on any number of threads and ranks).
   double infiltrate(std::vector<double>& h, std::vector<double>& hu, std::vector<double>& hv,
-                    double dt);
+                    double dt, std::span<const int> cells = {},
+                    const std::function<void(std::vector<double>&)>& share = {});
 
  private:
   bool enabled_ = false;
