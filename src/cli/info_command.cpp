@@ -83,9 +83,8 @@ void add_info_command(CLI::App& app) {
     if (const int parts = options->parts; parts > 0) {
       const CellMesh cells =
           build_cell_mesh(mesh, c ? c->flow.fv.cells : FiniteVolumeConfig{}.cells);
-      const int levels = c ? c->flow.fv.time_levels : 1;  // fine cells weigh their updates
-      const std::vector<int> weights =
-          levels > 1 ? size_weights(cells, levels) : std::vector<int>{};
+      const std::vector<int> weights =  // with local time stepping: each cell's updates
+          size_weights(cells, c ? c->flow.fv.time_levels : 1);
       const std::vector<int> part = partition_cells(cells, parts, weights);
       text += format_partition(summarize_partition(cells, part, parts, weights), parts);
       if (!options->parts_vtu.empty()) {

@@ -37,9 +37,7 @@ void FvEngine::initialize() {
 }
 
 void FvEngine::split_over_ranks(int rank, int ranks) {
-  const int levels = case_.flow.fv.time_levels;
-  const std::vector<int> weights =
-      levels > 1 ? size_weights(solver_.cells(), levels) : std::vector<int>{};
+  const std::vector<int> weights = size_weights(solver_.cells(), case_.flow.fv.time_levels);
   solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks, weights,
                                                            solver_.open_boundary()));
 }

@@ -174,6 +174,11 @@ class FiniteVolumeSolver {
   void gather_discharge_weights(std::span<const int> boundary_edges) const;
   /// This rank's split while advance() runs (each rank its own cells), else nullptr (all cells).
   const RankSplit* part() const { return advancing_ ? split_.get() : nullptr; }
+  /// The cells this rank advances: its own over ranks, else all.
+  std::span<const int> my_cells() const {
+    const RankSplit* split = part();
+    return split ? split->own() : std::span<const int>(all_cells_);
+  }
   void exchange(ConservedState& U) const;
   void gather(ConservedState& U) const;
   // Local time stepping (local_time_steps.cpp).

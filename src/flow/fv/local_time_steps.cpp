@@ -61,7 +61,7 @@ std::vector<std::vector<int>> FiniteVolumeSolver::tied_cells() const {
 void FiniteVolumeSolver::choose_levels(double dt0, int cap) {
   const int n = cells_.cell_count;
   const RankSplit* split = part();
-  const std::span<const int> mine = split ? split->own() : std::span<const int>(all_cells_);
+  const std::span<const int> mine = my_cells();
   const bool before = static_cast<int>(raw_levels_.size()) == n;
   std::vector<int> raw = before ? raw_levels_ : std::vector<int>(n, 0);
   bool changed = !before;
@@ -140,7 +140,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
     const double courant = case_.flow.fv.courant;
     double dt_courant = std::numeric_limits<double>::infinity();
     const RankSplit* split = part();
-    const std::span<const int> mine = split ? split->own() : std::span<const int>(all_cells_);
+    const std::span<const int> mine = my_cells();
     const auto count = static_cast<std::ptrdiff_t>(mine.size());
 #pragma omp parallel for schedule(static) reduction(min : dt_courant)
     for (std::ptrdiff_t k = 0; k < count; ++k) {

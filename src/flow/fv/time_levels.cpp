@@ -107,7 +107,7 @@ TimeLevels build_time_levels(const CellMesh& c, std::vector<int> levels) {
 
 std::vector<int> size_weights(const CellMesh& c, int time_levels) {
   const int n = c.cell_count, cap = time_levels - 1;
-  if (n == 0) return {};
+  if (n == 0 || cap < 1) return {};
   const double smallest = *std::min_element(c.length_scale.begin(), c.length_scale.end());
   std::vector<int> raw(n);
   for (int i = 0; i < n; ++i)

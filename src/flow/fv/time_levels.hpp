@@ -52,7 +52,7 @@ TimeLevels build_time_levels(const CellMesh& cells, std::vector<int> levels);
 
 /// Each cell's work per cycle of `time_levels` levels, 2^(top - m), at the level m its size alone
 /// gives it (one wave speed everywhere; smoothed as cell_levels does): the weights of the parts
-/// for MPI ranks, so that fine and coarse cells balance.
+/// for MPI ranks, so that fine and coarse cells balance. Empty with one level (every cell 1).
 std::vector<int> size_weights(const CellMesh& cells, int time_levels);
 
 /// One MPI rank's share of `levels` (rank_split.hpp): of each part, the edges beside the rank's

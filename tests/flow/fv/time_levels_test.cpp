@@ -7,9 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <queue>
-
 #include <cmath>
+#include <queue>
 #include <set>
 
 #include "flow/fv/cell_mesh.hpp"
@@ -159,7 +158,7 @@ TEST(TimeLevels, EachRankSharesThePartsBesideItsCells) {
 
 // Cells whose sizes double at each edge crossed away from cell `fine`: the level its size gives
 // a cell is its distance (capped), smoothed to one level every two cells; its weight the
-// updates it takes per cycle, 2^(top - level) (exact).
+// updates it takes per cycle, 2^(top - level) (exact); with one level, none.
 TEST(TimeLevels, SizeWeightsAreEachCellsUpdatesPerCycle) {
   CellMesh c = strip();
   const std::vector<int> d = distances(c, fine);
@@ -169,6 +168,7 @@ TEST(TimeLevels, SizeWeightsAreEachCellsUpdatesPerCycle) {
   for (int i = 0; i < c.cell_count; ++i) EXPECT_EQ(w[i], 1 << (cap - std::min(cap, d[i] / 2))) << i;
   const std::vector<int> uniform = size_weights(strip(), cap + 1);
   EXPECT_TRUE(std::all_of(uniform.begin(), uniform.end(), [](int x) { return x == 1; }));
+  EXPECT_TRUE(size_weights(c, 1).empty()) << "one level: no weights, every cell 1";
 }
 
 }  // namespace
