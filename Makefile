@@ -166,13 +166,13 @@ bench: build bench-deps
 	    $(BUILD)/flotsam run $(BUILD)/bench_runs/town/$$c.yaml -o $(BUILD)/bench_runs/town/$$c \
 	    --end 1200 --overwrite -q | grep -E "finite volumes|wall time"; done
 	@echo "== local time stepping (docs/performance.md): examples/town_flood (30 minutes) and"
-	@echo "   bridge_piers with engine: fv (600 s), flow.fv.time_levels 1 and 3, alternated twice"
-	@sed 's/^  engine: fv/  engine: fv\n  fv: {time_levels: 3}/' examples/town_flood/town_flood.yaml \
-	    > $(BUILD)/bench_runs/town/town_levels.yaml
-	@sed 's/^  engine: fv/  engine: fv\n  fv: {time_levels: 3}/' $(BUILD)/bench_runs/bridge_piers_fv.yaml \
-	    > $(BUILD)/bench_runs/bridge_piers_fv_levels.yaml
-	@for r in 1 2; do for c in town/town_deck:1800 town/town_levels:1800 bridge_piers_fv:600 \
-	    bridge_piers_fv_levels:600; do f=$${c%%:*}; echo "$$f:"; \
+	@echo "   bridge_piers with engine: fv (600 s), flow.fv.time_levels 1 and auto (3), alternated twice"
+	@sed 's/^  engine: fv/  engine: fv\n  fv: {time_levels: 1}/' examples/town_flood/town_flood.yaml \
+	    > $(BUILD)/bench_runs/town/town_one_level.yaml
+	@sed 's/^  engine: fv/  engine: fv\n  fv: {time_levels: 1}/' $(BUILD)/bench_runs/bridge_piers_fv.yaml \
+	    > $(BUILD)/bench_runs/bridge_piers_fv_one_level.yaml
+	@for r in 1 2; do for c in town/town_one_level:1800 town/town_deck:1800 \
+	    bridge_piers_fv_one_level:600 bridge_piers_fv:600; do f=$${c%%:*}; echo "$$f:"; \
 	    $(BUILD)/flotsam run $(BUILD)/bench_runs/$$f.yaml -o $(BUILD)/bench_runs/levels_$$(basename $$f) \
 	    --end $${c##*:} --overwrite -q | grep -E "finite volumes|wall time"; done; done
 	@for c in examples/bridge_piers.yaml examples/bridge_flood.yaml \

@@ -1,5 +1,6 @@
 // flotsam info FILE: what a mesh holds (nodes, elements, boundary groups with their lengths,
-// element sizes and quality). FILE is a Gmsh .msh file or a case file (its mesh is generated).
+// element sizes and quality). FILE is a Gmsh .msh file or a case file (its mesh is generated);
+// for a finite-volume case also the time levels the run will take (flow/fv/time_levels.hpp).
 // With --parts N, also how the finite-volume cells split into N parts for N MPI ranks
 // (flow/fv/partition.hpp): each part's cells, its halo and the parts it exchanges with.
 #include <fmt/core.h>
@@ -80,11 +81,19 @@ void add_info_command(CLI::App& app) {
         is_case_file(options->path) ? std::optional<Case>(read_case(options->path)) : std::nullopt;
     const Mesh mesh = c ? generate_mesh(c->mesh) : read_msh(options->path);
     std::string text = format_mesh_summary(summarize_mesh(mesh));
+    const bool fv = c && c->flow.engine == FlowEngineKind::fv;
+    if (!fv && options->parts == 0) return print_result(text);
+    const FlowConfig flow = c ? c->flow : FlowConfig{};
+    const CellMesh cells = build_cell_mesh(mesh, flow.fv.cells);
+    const int levels = fv ? choose_time_levels(cells, flow) : 1;
+    if (fv)
+      text += fmt::format(
+          "time levels    {}{} ({:.2f}x fewer cell updates with {} than with one, by the cells' "
+          "sizes)\n",
+          levels, flow.fv.time_levels == 0 ? " (auto)" : "", size_gain(cells, auto_levels),
+          auto_levels);
     if (const int parts = options->parts; parts > 0) {
-      const CellMesh cells =
-          build_cell_mesh(mesh, c ? c->flow.fv.cells : FiniteVolumeConfig{}.cells);
-      const std::vector<int> weights =  // with local time stepping: each cell's updates
-          size_weights(cells, c ? c->flow.fv.time_levels : 1);
+      const std::vector<int> weights = size_weights(cells, levels);  // each cell's updates
       const std::vector<int> part = partition_cells(cells, parts, weights);
       text += format_partition(summarize_partition(cells, part, parts, weights), parts);
       if (!options->parts_vtu.empty()) {

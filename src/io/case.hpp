@@ -62,7 +62,8 @@ struct FiniteVolumeConfig {
                          // positive by construction, above a sub-step that makes one negative is
                          // retried at half the step (model.md (M-16))
   double velocity_depth = 1e-5;  // H_eps [m]: below it velocities are desingularised (model.md)
-  int time_levels = 1;     // [-] local time stepping: steps dt0 .. 2^(levels-1) dt0 (1: one step)
+  int time_levels = 0;     // [-] local time stepping: steps dt0 .. 2^(levels-1) dt0 (1: one step);
+                           // 0: `auto` (flow/fv/time_levels.hpp choose_time_levels)
   double pier_drag = 1.2;  // C_d [-] of the piers' form drag (model.md (M-25)); 0: none
 };
 

@@ -45,7 +45,9 @@ FiniteVolumeConfig read_finite_volume(const YamlMap& m) {
     fv.cells = m.get("cells").choice<FvCells>(
         {{"elements", FvCells::elements}, {"split", FvCells::split}});
   fv.velocity_depth = m.number("velocity_depth", fv.velocity_depth, Range::positive());
-  fv.time_levels = static_cast<int>(m.integer("time_levels", fv.time_levels, Range::between(1, 8)));
+  if (const auto levels = m.find("time_levels"))  // 1..8, or auto (0)
+    fv.time_levels = levels->is_number() ? static_cast<int>(levels->integer(Range::between(1, 8)))
+                                         : levels->choice<int>({{"auto", 0}});
   fv.pier_drag = m.number("pier_drag", fv.pier_drag, Range::between(0.0, 10.0));
   return fv;
 }

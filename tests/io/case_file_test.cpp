@@ -424,7 +424,11 @@ TEST(CaseFile, FiniteVolumeEngineTakesItsOptions) {
   EXPECT_EQ(d.flow.fv.order, 2);  // the defaults
   EXPECT_EQ(d.flow.fv.courant, 0.9);
   EXPECT_EQ(d.flow.fv.cells, FvCells::elements);
-  EXPECT_EQ(d.flow.fv.time_levels, 1);
+  EXPECT_EQ(d.flow.fv.time_levels, 0);  // auto
+  EXPECT_EQ(parse_case(edited("  initial:", "  engine: fv\n  fv: {time_levels: auto}\n  initial:"),
+                       "case.yaml")
+                .flow.fv.time_levels,
+            0);
   EXPECT_EQ(d.flow.dry_depth_or_default(), 1e-5);  // the finite volumes' (docs/model.md (M-15))
   // A generated mesh of three-node triangles for the finite volumes, six-node for the FEM.
   EXPECT_EQ(d.mesh.element_order, 1);
@@ -641,6 +645,8 @@ TEST(CaseFileError, EngineKeysAreChecked) {
             "velocity_depth, time_levels, pier_drag");
   EXPECT_EQ(error_of(fv("time_levels: 9")),
             "case.yaml:6: flow.fv.time_levels: expected an integer in [1, 8], got 9");
+  EXPECT_EQ(error_of(fv("time_levels: fast")),
+            "case.yaml:6: flow.fv.time_levels: unknown value 'fast'; expected one of: auto");
   EXPECT_EQ(error_of(fv("pier_drag: -0.5")),
             "case.yaml:6: flow.fv.pier_drag: expected a number in [0, 10], got -0.5");
 }

@@ -33,6 +33,11 @@ add_test(NAME cli.info_parts_vtu
          WORKING_DIRECTORY ${cli_work})
 set_tests_properties(cli.info_parts_vtu PROPERTIES LABELS "cli" FIXTURES_REQUIRED cli_mesh
                      ENVIRONMENT "${test_environment}")
+# A finite-volume case's time levels: `auto` takes three on bridge_blocking.yaml's mesh, 4 m
+# cells graded to 0.5 m at the piers (the choice itself: TimeLevels unit tests).
+flotsam_cli_test(info_time_levels_auto 0
+                 "time levels +3 .auto. .[0-9.]+x fewer cell updates with 3 than with one"
+                 info ${examples}/bridge_blocking.yaml)
 flotsam_cli_test(mesh_refuses_to_overwrite nonzero "bridge.msh' exists; pass --overwrite"
                  mesh ${examples}/bridge_piers.yaml -o bridge.msh)
 set_tests_properties(cli.mesh_refuses_to_overwrite PROPERTIES FIXTURES_REQUIRED cli_mesh)

@@ -37,7 +37,7 @@ void FvEngine::initialize() {
 }
 
 void FvEngine::split_over_ranks(int rank, int ranks) {
-  const std::vector<int> weights = size_weights(solver_.cells(), case_.flow.fv.time_levels);
+  const std::vector<int> weights = size_weights(solver_.cells(), solver_.time_levels());
   solver_.set_rank_split(std::make_shared<const RankSplit>(solver_.cells(), rank, ranks, weights,
                                                            solver_.open_boundary()));
 }
@@ -244,7 +244,7 @@ std::string FvEngine::summary() const {
   // The work done, whatever the machine: one cell advanced one step (a retried one too).
   const double updates = s.cell_updates;
   // Local time stepping: the sub-steps are those of the finest cells (docs/model.md).
-  const int levels = case_.flow.fv.time_levels;
+  const int levels = solver_.time_levels();
   const std::string finest =
       levels > 1 ? fmt::format(" of the finest of {} time levels", levels) : "";
   return fmt::format(

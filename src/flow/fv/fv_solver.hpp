@@ -111,6 +111,8 @@ class FiniteVolumeSolver {
   void fill_field(CellField& field) const;
 
   const CellMesh& cells() const { return cells_; }
+  /// The time levels the run uses: flow.fv.time_levels, `auto` chosen (time_levels.hpp).
+  int time_levels() const { return time_levels_; }
   /// The friction law's coefficient (n, C or K) per cell, at its centroid: the case's default,
   /// its raster, its zones (flow/friction_map.hpp); empty without friction.
   const std::vector<double>& friction_coefficients() const { return friction_coefficient_; }
@@ -249,6 +251,7 @@ class FiniteVolumeSolver {
   // at the cell's first stage (EdgeRate, side_*) and the sum of the edge's evaluations over the
   // cell's step times their weights (sum_*) [m^3, m^4/s].
   std::vector<int> all_cells_, all_edges_;
+  int time_levels_ = 1;
   std::vector<std::vector<int>> level_ties_;
   TimeLevels full_levels_, capped_levels_;  // this cycle's, and those capped for a last one
   const TimeLevels* levels_ = nullptr;      // the cycle's: one of those

@@ -129,7 +129,7 @@ void FiniteVolumeSolver::advance_local(double dt) {
   for (auto* a : {&side_h_, &side_hu_, &side_hv_, &sum_h_, &sum_hu_, &sum_hv_})
     a->assign(3 * static_cast<std::size_t>(n), 0.0);
   if (sources_.any()) source_depth_.assign(n, 0.0);
-  const int cap = case_.flow.fv.time_levels - 1;
+  const int cap = time_levels_ - 1;
   raw_levels_.clear();  // each step chooses from its own start: a restart continues bit for bit
   double shrink = 1.0;  // [-] of every cell's Courant step, halved at each retry
   while (U_.time < t_end - 1e-12 * dt) {

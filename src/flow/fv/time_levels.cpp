@@ -120,6 +120,21 @@ std::vector<int> size_weights(const CellMesh& c, int time_levels) {
   return weight;
 }
 
+double size_gain(const CellMesh& c, int time_levels) {
+  const std::vector<int> weight = size_weights(c, time_levels);
+  if (weight.empty()) return 1.0;
+  double work = 0.0;  // [cell updates per cycle]
+  for (int w : weight) work += w;
+  const int steps = *std::max_element(weight.begin(), weight.end());  // 2^top
+  return static_cast<double>(c.cell_count) * steps / work;
+}
+
+int choose_time_levels(const CellMesh& c, const FlowConfig& flow) {
+  if (flow.fv.time_levels > 0) return flow.fv.time_levels;
+  const bool infiltrating = flow.rain.enabled && flow.rain.infiltration > 0.0;
+  return !infiltrating && size_gain(c, auto_levels) >= auto_gain ? auto_levels : 1;
+}
+
 TimeLevels rank_share(const CellMesh& c, const TimeLevels& levels, const RankSplit& split) {
   const auto owned = [&split](int i) { return split.ring(i) == 0; };
   const auto reconstructed = [&split](int i) { return split.ring(i) <= 1; };

@@ -3,7 +3,7 @@
 // towards the finest, ties and the rings ahead of a shoreline lower them, and the parts of L
 // hold exactly the edges and cells of their levels; over MPI ranks each rank's share of a part
 // holds the part's edges beside its cells and all they read; the parts' weights are each cell's
-// updates per cycle.
+// updates per cycle; `auto` takes three levels where the cells' sizes predict the gain.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -169,6 +169,29 @@ TEST(TimeLevels, SizeWeightsAreEachCellsUpdatesPerCycle) {
   const std::vector<int> uniform = size_weights(strip(), cap + 1);
   EXPECT_TRUE(std::all_of(uniform.begin(), uniform.end(), [](int x) { return x == 1; }));
   EXPECT_TRUE(size_weights(c, 1).empty()) << "one level: no weights, every cell 1";
+}
+
+// `time_levels: auto`: the gain the sizes predict is the cycle's updates with one level over
+// those of the weights (exact); three levels on the graded strip (gain about 3.8), one on the
+// uniform strip (gain 1) and with rain that infiltrates; levels set are kept.
+TEST(TimeLevels, AutoTakesThreeLevelsWhereTheSizesPredictTheGain) {
+  CellMesh c = strip();
+  const std::vector<int> d = distances(c, fine);
+  for (int i = 0; i < c.cell_count; ++i) c.length_scale[i] = 0.25 * std::ldexp(1.0, d[i]);
+  double work = 0.0;  // per cycle of 4 steps of the finest cell
+  for (int i = 0; i < c.cell_count; ++i) work += 1 << (2 - std::min(2, d[i] / 2));
+  EXPECT_DOUBLE_EQ(size_gain(c, auto_levels), 4.0 * c.cell_count / work);
+  EXPECT_GT(size_gain(c, auto_levels), auto_gain);
+  EXPECT_EQ(size_gain(strip(), auto_levels), 1.0);
+  FlowConfig flow;
+  ASSERT_EQ(flow.fv.time_levels, 0) << "auto is the default";
+  EXPECT_EQ(choose_time_levels(c, flow), auto_levels);
+  EXPECT_EQ(choose_time_levels(strip(), flow), 1);
+  flow.rain.enabled = true;
+  flow.rain.infiltration = 5.0;
+  EXPECT_EQ(choose_time_levels(c, flow), 1);
+  flow.fv.time_levels = 2;
+  EXPECT_EQ(choose_time_levels(strip(), flow), 2);
 }
 
 }  // namespace
