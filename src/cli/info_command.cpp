@@ -85,7 +85,7 @@ void add_info_command(CLI::App& app) {
     if (!fv && options->parts == 0) return print_result(text);
     const FlowConfig flow = c ? c->flow : FlowConfig{};
     const CellMesh cells = build_cell_mesh(mesh, flow.fv.cells);
-    const int levels = fv ? choose_time_levels(cells, flow) : 1;
+    const int levels = fv ? choose_time_levels(cells, flow.fv.time_levels) : 1;
     if (fv)
       text += fmt::format(
           "time levels    {}{} ({:.2f}x fewer cell updates with {} than with one, by the cells' "

@@ -58,24 +58,17 @@ if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
                    ${CMAKE_CURRENT_BINARY_DIR}/ranks_levels_work 3 300)
   set_tests_properties(cli.run_split_over_ranks_with_time_levels_bit_for_bit PROPERTIES
                        LABELS "cli" ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
-  # Rain with infiltration (one time level): each rank infiltrates its cells, the volume summed
-  # in the cells' order on every rank.
-  add_test(NAME cli.run_split_over_ranks_with_infiltration_bit_for_bit
-           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/ranks_check.sh $<TARGET_FILE:flotsam>
-                   ${PROJECT_SOURCE_DIR}/examples/dam_break_valley.yaml
-                   ${CMAKE_CURRENT_BINARY_DIR}/ranks_rain_work 1 120
-                   "  rain: {intensity: 60, infiltration: 20}")
-  set_tests_properties(cli.run_split_over_ranks_with_infiltration_bit_for_bit PROPERTIES
-                       LABELS "cli" ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
-  # Infiltration under local time stepping does not split yet: refused on every rank, naming both
-  # keys, before anything is written.
-  add_test(NAME cli.run_infiltration_with_time_levels_on_two_ranks_is_refused
-           COMMAND bash -c
-                   "sed 's/^  engine: fv$/  engine: fv\\n  fv: {time_levels: 3}\\n  rain: {intensity: 60, infiltration: 20}/' \"$1\" > rain_levels.yaml && rm -rf rain_levels && ! mpirun --oversubscribe -n 2 \"$0\" run rain_levels.yaml -o rain_levels --end 2 -q >out_rain.txt 2>&1 && grep -q 'flow.rain infiltration with flow.fv.time_levels: 3 is not supported on several MPI ranks' out_rain.txt && test ! -e rain_levels || { cat out_rain.txt; exit 1; }"
-                   $<TARGET_FILE:flotsam> ${PROJECT_SOURCE_DIR}/examples/dam_break_valley.yaml
-           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/cli_work)
-  set_tests_properties(cli.run_infiltration_with_time_levels_on_two_ranks_is_refused PROPERTIES
-                       LABELS "cli" ENVIRONMENT "${test_environment};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
+  # Rain with infiltration, with one time level and with three: each rank infiltrates its cells,
+  # the volume summed in the cells' order on every rank (per sub-step; per cycle with levels).
+  foreach(levels 1 3)
+    add_test(NAME cli.run_split_over_ranks_with_infiltration_${levels}_levels_bit_for_bit
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/ranks_check.sh $<TARGET_FILE:flotsam>
+                     ${PROJECT_SOURCE_DIR}/examples/dam_break_valley.yaml
+                     ${CMAKE_CURRENT_BINARY_DIR}/ranks_rain_${levels}_work ${levels} 120
+                     "  rain: {intensity: 60, infiltration: 20}")
+    set_tests_properties(cli.run_split_over_ranks_with_infiltration_${levels}_levels_bit_for_bit
+                         PROPERTIES LABELS "cli" ENVIRONMENT "${test_environment}" RUN_SERIAL TRUE)
+  endforeach()
   add_test(NAME cli.run_fem_on_two_ranks_is_refused
            COMMAND bash -c
                    "rm -rf ranks2 && ! mpirun --oversubscribe -n 2 \"$0\" run \"$1\" -o ranks2 --end 2 -q >out.txt 2>&1 && grep -q 'flow.engine: fem does not split one flood over MPI ranks (2 were started)' out.txt && test ! -e ranks2 && mpirun -n 1 \"$0\" run \"$1\" -o ranks1 --end 2 -q --overwrite >/dev/null 2>&1 && test -f ranks1/checkpoint.bin || { cat out.txt; exit 1; }"

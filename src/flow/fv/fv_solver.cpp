@@ -76,13 +76,12 @@ FiniteVolumeSolver::FiniteVolumeSolver(const Mesh& mesh, const Case& flow_case,
   if (sources_.any()) source_depth_.assign(n, 0.0);
   field_.resize(n);
   edge_discharge_.assign(m, 0.0);
-  time_levels_ = choose_time_levels(cells_, flow);
+  time_levels_ = choose_time_levels(cells_, flow.fv.time_levels);
   if (flow.fv.time_levels == 0)
     spdlog::info(
         "flow.fv.time_levels auto: {} (the cells' sizes predict {:.2f}x fewer updates "
-        "with {} levels than with one{})",
-        time_levels_, size_gain(cells_, auto_levels), auto_levels,
-        rain_.infiltrating() ? "; one level with infiltration" : "");
+        "with {} levels than with one)",
+        time_levels_, size_gain(cells_, auto_levels), auto_levels);
   if (time_levels_ > 1) level_ties_ = tied_cells();
   all_edges_.resize(m);
   for (int e = 0; e < m; ++e) all_edges_[e] = e;
@@ -641,12 +640,6 @@ void FiniteVolumeSolver::gather_step() {
 }
 
 void FiniteVolumeSolver::set_rank_split(std::shared_ptr<const RankSplit> split) {
-  const std::string file = case_.file.empty() ? "case" : case_.file;
-  if (split && split->size() > 1 && rain_.infiltrating() && time_levels_ > 1)
-    throw_input_error(
-        "{}: flow.rain infiltration with flow.fv.time_levels: {} is not supported on several MPI "
-        "ranks yet (issue 41); run it with time_levels: 1 or auto, or on one rank",
-        file, time_levels_);
   split_ = split && split->size() > 1 ? std::move(split) : nullptr;
 }
 

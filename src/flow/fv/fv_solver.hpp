@@ -264,8 +264,9 @@ class FiniteVolumeSolver {
   int rank_levels_built_ = -1;        // levels_built_ when rank_levels_ was taken
   std::vector<double> level_inputs_;  // over ranks: each cell's raw level and dryness
   std::vector<double> cell_step_, step_start_, feed_;
-  std::vector<double> level_step_;  // [s] 2^m dt0 per level m, this cycle
-  std::vector<char> dry_;           // per cell, at the cycle's start
+  std::vector<double> level_step_;   // [s] 2^m dt0 per level m, this cycle
+  std::vector<double> infiltrated_;  // [m^3] per cell, infiltrated this cycle
+  std::vector<char> dry_;            // per cell, at the cycle's start
   std::vector<double> side_h_, side_hu_, side_hv_;
   std::vector<double> sum_h_, sum_hu_, sum_hv_;
 };

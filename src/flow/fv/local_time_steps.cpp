@@ -208,6 +208,7 @@ int FiniteVolumeSolver::local_cycle(double t0, double dt0) {
   std::fill(step_start_.begin(), step_start_.end(), t0);
   level_step_.resize(lv.top + 1);
   for (int m = 0; m <= lv.top; ++m) level_step_[m] = std::ldexp(dt0, m);
+  if (rain_.infiltrating()) infiltrated_.assign(cells_.cell_count, 0.0);
   const int ticks = 1 << lv.top;
   for (int k = 0; k < ticks; ++k) {
     const int a = k == 0 ? lv.top : std::countr_zero(static_cast<unsigned>(k));
@@ -226,6 +227,10 @@ int FiniteVolumeSolver::local_cycle(double t0, double dt0) {
     const int bad = finish_steps(lv.cells_upto[b], mine.cells_upto[b], t0 + (k + 1) * dt0);
     if (bad >= 0) return bad;
     exchange_steps(true);
+  }
+  if (rain_.infiltrating()) {  // each cell's from its owner, summed in the cells' order
+    if (split) split->gather(infiltrated_.data(), 1);
+    for (double v : infiltrated_) balance_.infiltration += v;
   }
   return -1;
 }
@@ -347,12 +352,15 @@ int FiniteVolumeSolver::finish_steps(const std::vector<int>& all, const std::vec
     const int bad = clamp_round_off(U1_, 1.0, all);
     if (bad >= 0) return bad;
   }
-  if (rain_.infiltrating()) {
+  if (rain_.infiltrating()) {  // the cycle's volume per cell, summed when it ends (local_cycle)
     const double f = rain_.infiltration_rate();
-    for (int i : mine)  // in the cells' order (all: refused over ranks): the balance's sum
-      balance_.infiltration +=
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const int i = mine[k];
+      infiltrated_[i] +=
           cells_.area[i] * RainSource::infiltrate_cell(U1_.h[i], U1_.hu[i], U1_.hv[i],
                                                        f * level_step_[levels_->cell_level[i]]);
+    }
   }
   if (friction_.law != FrictionLaw::none) {
 #pragma omp parallel for schedule(static)

@@ -129,10 +129,9 @@ double size_gain(const CellMesh& c, int time_levels) {
   return static_cast<double>(c.cell_count) * steps / work;
 }
 
-int choose_time_levels(const CellMesh& c, const FlowConfig& flow) {
-  if (flow.fv.time_levels > 0) return flow.fv.time_levels;
-  const bool infiltrating = flow.rain.enabled && flow.rain.infiltration > 0.0;
-  return !infiltrating && size_gain(c, auto_levels) >= auto_gain ? auto_levels : 1;
+int choose_time_levels(const CellMesh& c, int configured) {
+  if (configured > 0) return configured;
+  return size_gain(c, auto_levels) >= auto_gain ? auto_levels : 1;
 }
 
 TimeLevels rank_share(const CellMesh& c, const TimeLevels& levels, const RankSplit& split) {

@@ -63,12 +63,11 @@ double size_gain(const CellMesh& cells, int time_levels);
 /// least `auto_gain` times fewer updates, else one (docs/model.md "Local time stepping"). A cell
 /// update of local time stepping costs 1.5-1.7 times one of the one-level step (the parts' rings
 /// re-read at every tick; docs/performance.md), so below that gain one level is as fast. Three
-/// levels, not more: with four, Stoker's envelope overshoots by 2.03 % (tolerance 2 %). With rain
-/// that infiltrates, one level: over MPI ranks the two are not combined yet, and the choice must
-/// not depend on the number of ranks. Levels set (1..8) are taken as they are.
+/// levels, not more: with four, Stoker's envelope overshoots by 2.03 % (tolerance 2 %). Levels
+/// set (`configured`, 1..8) are taken as they are.
 inline constexpr int auto_levels = 3;
 inline constexpr double auto_gain = 1.6;  // [-]
-int choose_time_levels(const CellMesh& cells, const FlowConfig& flow);
+int choose_time_levels(const CellMesh& cells, int configured);
 
 /// One MPI rank's share of `levels` (rank_split.hpp): of each part, the edges beside the rank's
 /// own cells (and their boundary edges), the cells whose reconstruction those read, the cells

@@ -173,7 +173,7 @@ TEST(TimeLevels, SizeWeightsAreEachCellsUpdatesPerCycle) {
 
 // `time_levels: auto`: the gain the sizes predict is the cycle's updates with one level over
 // those of the weights (exact); three levels on the graded strip (gain about 3.8), one on the
-// uniform strip (gain 1) and with rain that infiltrates; levels set are kept.
+// uniform strip (gain 1); levels set are kept.
 TEST(TimeLevels, AutoTakesThreeLevelsWhereTheSizesPredictTheGain) {
   CellMesh c = strip();
   const std::vector<int> d = distances(c, fine);
@@ -183,15 +183,12 @@ TEST(TimeLevels, AutoTakesThreeLevelsWhereTheSizesPredictTheGain) {
   EXPECT_DOUBLE_EQ(size_gain(c, auto_levels), 4.0 * c.cell_count / work);
   EXPECT_GT(size_gain(c, auto_levels), auto_gain);
   EXPECT_EQ(size_gain(strip(), auto_levels), 1.0);
-  FlowConfig flow;
-  ASSERT_EQ(flow.fv.time_levels, 0) << "auto is the default";
-  EXPECT_EQ(choose_time_levels(c, flow), auto_levels);
-  EXPECT_EQ(choose_time_levels(strip(), flow), 1);
-  flow.rain.enabled = true;
-  flow.rain.infiltration = 5.0;
-  EXPECT_EQ(choose_time_levels(c, flow), 1);
-  flow.fv.time_levels = 2;
-  EXPECT_EQ(choose_time_levels(strip(), flow), 2);
+  const int automatic = FiniteVolumeConfig{}.time_levels;
+  ASSERT_EQ(automatic, 0) << "auto is the default";
+  EXPECT_EQ(choose_time_levels(c, automatic), auto_levels);
+  EXPECT_EQ(choose_time_levels(strip(), automatic), 1);
+  EXPECT_EQ(choose_time_levels(strip(), 2), 2);
+  EXPECT_EQ(choose_time_levels(c, 1), 1);
 }
 
 }  // namespace
