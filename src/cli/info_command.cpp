@@ -81,17 +81,16 @@ void add_info_command(CLI::App& app) {
         is_case_file(options->path) ? std::optional<Case>(read_case(options->path)) : std::nullopt;
     const Mesh mesh = c ? generate_mesh(c->mesh) : read_msh(options->path);
     std::string text = format_mesh_summary(summarize_mesh(mesh));
-    const bool fv = c && c->flow.engine == FlowEngineKind::fv;
-    if (!fv && options->parts == 0) return print_result(text);
-    const FlowConfig flow = c ? c->flow : FlowConfig{};
-    const CellMesh cells = build_cell_mesh(mesh, flow.fv.cells);
-    const int levels = fv ? choose_time_levels(cells, flow.fv.time_levels) : 1;
-    if (fv)
+    const bool finite_volumes = c && c->flow.engine == FlowEngineKind::fv;
+    if (!finite_volumes && options->parts == 0) return print_result(text);
+    const FiniteVolumeConfig fv = c ? c->flow.fv : FiniteVolumeConfig{};
+    const CellMesh cells = build_cell_mesh(mesh, fv.cells);
+    const int levels = finite_volumes ? choose_time_levels(cells, fv.time_levels) : 1;
+    if (finite_volumes)
       text += fmt::format(
           "time levels    {}{} ({:.2f}x fewer cell updates with {} than with one, by the cells' "
           "sizes)\n",
-          levels, flow.fv.time_levels == 0 ? " (auto)" : "", size_gain(cells, auto_levels),
-          auto_levels);
+          levels, fv.time_levels == 0 ? " (auto)" : "", size_gain(cells, auto_levels), auto_levels);
     if (const int parts = options->parts; parts > 0) {
       const std::vector<int> weights = size_weights(cells, levels);  // each cell's updates
       const std::vector<int> part = partition_cells(cells, parts, weights);

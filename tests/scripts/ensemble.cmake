@@ -42,9 +42,9 @@ set_tests_properties(cli.ensemble_bridge_on_a_region_mesh PROPERTIES LABELS "cli
 
 # One flood over MPI ranks (finite volumes): the same files bit for bit on 1-4 ranks and after a
 # restart moved from 2 to 3 ranks (ranks_check.sh), with one time level (set: the valley's mesh
-# takes three by `auto`) and with three (300 s:
-# a cycle retried at half the step between 200 and 300 s); the FEM is refused on every rank with a
-# message naming the engine, before anything is written.
+# takes three by `auto`) and with three (300 s: a cycle retried at half the step between 200 and
+# 300 s); the FEM is refused on every rank with a message naming the engine, before anything is
+# written.
 if(FLOTSAM_MPIRUN AND MPI_CXX_FOUND)
   add_test(NAME cli.run_split_over_ranks_bit_for_bit
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/ranks_check.sh $<TARGET_FILE:flotsam>

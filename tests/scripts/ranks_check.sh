@@ -6,8 +6,8 @@
 # write (fields, envelopes, bodies, tables, checkpoint, .pvd indexes) identical to the one-process
 # run's, and the summary says the flood was split. Then a restart moved from 2 to 3 ranks: 0-60 s
 # on 2, 60-120 s on 3, identical to the run that never stopped. With TIME_LEVELS, the case runs
-# with flow.fv.time_levels: TIME_LEVELS added under its `engine: fv` (without, the case's own: `auto`), to
-# END s (the restart moved at half of it).
+# with flow.fv.time_levels: TIME_LEVELS added under its `engine: fv` (without, its own: `auto`),
+# to END s (the restart moved at half of it).
 # With FLOW (a line of YAML), it is added under `flow:` too (e.g. rain with infiltration).
 # Usage: ranks_check.sh FLOTSAM CASE WORK [TIME_LEVELS [END [FLOW]]]
 set -u
